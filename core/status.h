@@ -1,0 +1,20 @@
+// Status values returned by every core stage. No exceptions in core/: a stage that cannot do
+// what was asked returns one of these and leaves its outputs in a defined state.
+#pragma once
+#include <stdint.h>
+
+namespace qt {
+
+enum class Status : uint8_t {
+    ok = 0,
+    bad_size,                   // width or height is 0 or above the compile-time capacity
+    bad_row_length,             // a row's length differs from the frame width
+    not_in_frame,               // push_row() without begin_frame(), or after the last row
+    previous_frame_incomplete,  // begin_frame() abandoned a frame whose rows had not all arrived;
+                                // the new frame has started normally
+};
+
+// Short English name for logs and CLI messages.
+const char* status_name(Status s);
+
+}  // namespace qt

@@ -1,0 +1,131 @@
+#include "gradient_cases.h"
+
+#include "board_scene.h"
+#include "prng.h"
+
+namespace qt::vec {
+
+namespace {
+
+scene::GreyImage noise(int w, int h, Pcg32& rng) {
+    scene::GreyImage img(w, h);
+    for (uint8_t& p : img.pixels) p = static_cast<uint8_t>(rng.next() & 0xFF);
+    return img;
+}
+
+// 0/255 checks of 2×2 pixels: x-1 and x+1 fall in different checks on every other column,
+// so gx and gy reach ±255 and the magnitude 510.
+scene::GreyImage checkerboard(int w, int h) {
+    scene::GreyImage img(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) img.at(x, y) = ((x / 2 + y / 2) & 1) ? 255 : 0;
+    return img;
+}
+
+std::string size_text(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+GradientCase single(const std::string& name, uint64_t seed, const scene::GreyImage& img) {
+    GradientCase c{name, seed, size_text(img.width, img.height), 1, {}};
+    append_frame(img, c.in);
+    return c;
+}
+
+GradientCase noise_case(const std::string& name, uint64_t seed, int w, int h) {
+    Pcg32 rng(seed);
+    return single(name, seed, noise(w, h, rng));
+}
+
+void append_beats(const scene::GreyImage& img, int rows, std::vector<InBeat>& beats,
+                  uint16_t declared_height) {
+    for (int y = 0; y < rows; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            InBeat b;
+            b.pixel = img.at(x, y);
+            b.tuser = x == 0 && y == 0;
+            b.tlast = x == img.width - 1;
+            b.height = b.tuser ? declared_height : 0;
+            beats.push_back(b);
+        }
+}
+
+// A stream with every framing fault of docs/gradient.md between good frames; the block must
+// report 5 errors and get every good frame right.
+GradientCase torn_stream(uint64_t seed) {
+    Pcg32 rng(seed);
+    GradientCase c{"torn_stream", seed, "", 0, {}};
+    auto& s = c.in;
+    auto good = [&](int w, int h) {
+        append_frame(noise(w, h, rng), s);
+        c.sizes += (c.sizes.empty() ? "" : "+") + size_text(w, h);
+        ++c.frames;
+    };
+    auto bad = [&](int w, int h) {
+        c.sizes += (c.sizes.empty() ? "" : "+") + size_text(w, h);
+        ++c.frames;
+        return noise(w, h, rng);
+    };
+    for (int i = 0; i < 3; ++i) s.push_back(InBeat{static_cast<uint8_t>(i), false, false, 0});  // stray beats
+    good(6, 4);
+    {   // short row 2: error, the rest of the frame is dropped
+        const auto img = bad(6, 5);
+        append_beats(img, 2, s, 5);
+        for (int x = 0; x < 4; ++x) s.push_back(InBeat{img.at(x, 2), false, x == 3, 0});
+        for (int y = 3; y < 5; ++y)
+            for (int x = 0; x < 6; ++x) s.push_back(InBeat{img.at(x, y), false, x == 5, 0});
+    }
+    good(5, 3);
+    append_beats(bad(7, 6), 3, s, 6);  // ends after 3 of 6 rows: the next start is an error
+    good(4, 3);
+    append_beats(bad(5, 2), 2, s, 0);  // declared height 0: error, beats dropped
+    {   // row 0 of 700 pixels without an end of line: error at column MAX_WIDTH - 1
+        const auto img = bad(700, 1);
+        for (int x = 0; x < 700; ++x) s.push_back(InBeat{img.at(x, 0), x == 0, false, static_cast<uint16_t>(x == 0 ? 1 : 0)});
+    }
+    {   // row 1 runs past the width learnt from row 0: error at column 7
+        const auto img = bad(9, 2);
+        for (int x = 0; x < 8; ++x) s.push_back(InBeat{img.at(x, 0), x == 0, x == 7, static_cast<uint16_t>(x == 0 ? 2 : 0)});
+        for (int x = 0; x < 9; ++x) s.push_back(InBeat{img.at(x, 1), false, x == 8, 0});
+    }
+    good(3, 3);
+    return c;
+}
+
+}  // namespace
+
+void append_frame(const scene::GreyImage& img, std::vector<InBeat>& beats) {
+    append_beats(img, img.height, beats, static_cast<uint16_t>(img.height));
+}
+
+std::vector<GradientCase> gradient_cases() {
+    std::vector<GradientCase> cases;
+    cases.push_back(noise_case("size_1x1", 11, 1, 1));
+    cases.push_back(noise_case("size_1x17", 12, 1, 17));
+    cases.push_back(noise_case("size_23x1", 13, 23, 1));
+    cases.push_back(noise_case("size_2x2", 14, 2, 2));
+    cases.push_back(noise_case("size_3x3", 15, 3, 3));
+    cases.push_back(noise_case("noise_37x23", 16, 37, 23));
+    cases.push_back(noise_case("noise_64x48", 17, 64, 48));
+    cases.push_back(single("const0_64x48", 0, scene::GreyImage(64, 48, 0)));
+    cases.push_back(single("const255_64x48", 0, scene::GreyImage(64, 48, 255)));
+    cases.push_back(single("checker_64x48", 0, checkerboard(64, 48)));
+    {
+        const scene::BoardScene board = scene::default_board_scene();
+        cases.push_back(single("board_640x480", board.seed, scene::render_board(board)));
+    }
+    {   // back-to-back frames of different sizes, including the widest and a 1-wide one
+        const uint64_t seed = 18;
+        Pcg32 rng(seed);
+        GradientCase c{"multi_sizes", seed, "", 0, {}};
+        const int sizes[][2] = {{5, 4}, {17, 9}, {1, 3}, {8, 1}, {31, 7}, {640, 2}, {2, 5}};
+        for (const auto& wh : sizes) {
+            append_frame(noise(wh[0], wh[1], rng), c.in);
+            c.sizes += (c.sizes.empty() ? "" : "+") + size_text(wh[0], wh[1]);
+            ++c.frames;
+        }
+        cases.push_back(c);
+    }
+    cases.push_back(torn_stream(19));
+    return cases;
+}
+
+}  // namespace qt::vec

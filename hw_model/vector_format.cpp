@@ -1,0 +1,181 @@
+#include "vector_format.h"
+
+#include <cinttypes>
+#include <cstdio>
+#include <sstream>
+
+namespace qt::vec {
+
+namespace {
+
+bool parse_hex_lines(const std::string& text, int digits, std::vector<uint64_t>& values,
+                     std::string& error) {
+    values.clear();
+    std::istringstream in(text);
+    std::string line;
+    size_t number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        if (line.size() != static_cast<size_t>(digits)) {
+            error = "line " + std::to_string(number) + ": expected " + std::to_string(digits) +
+                    " hex digits, got '" + line + "'";
+            return false;
+        }
+        uint64_t v = 0;
+        for (char c : line) {
+            int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+            if (d < 0) {
+                error = "line " + std::to_string(number) + ": not lower-case hex: '" + line + "'";
+                return false;
+            }
+            v = v * 16 + static_cast<uint64_t>(d);
+        }
+        values.push_back(v);
+    }
+    return true;
+}
+
+std::string hex(uint64_t v, int digits) {
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%0*" PRIx64, digits, v);
+    return buf;
+}
+
+}  // namespace
+
+std::string format_in(const std::vector<InBeat>& beats) {
+    std::string s;
+    s.reserve(beats.size() * (kInHexDigits + 1));
+    for (const InBeat& b : beats) {
+        const uint64_t v = (static_cast<uint64_t>(b.height) << kInHeightLsb) |
+                           (static_cast<uint64_t>(b.tlast) << kInTlastBit) |
+                           (static_cast<uint64_t>(b.tuser) << kInTuserBit) | b.pixel;
+        s += hex(v, kInHexDigits);
+        s += '\n';
+    }
+    return s;
+}
+
+std::string format_out(const std::vector<OutBeat>& beats) {
+    std::string s;
+    s.reserve(beats.size() * (kOutHexDigits + 1));
+    for (const OutBeat& b : beats) {
+        const uint64_t v = (static_cast<uint64_t>(b.tlast) << kOutTlastBit) |
+                           (static_cast<uint64_t>(b.tuser) << kOutTuserBit) | b.word;
+        s += hex(v, kOutHexDigits);
+        s += '\n';
+    }
+    return s;
+}
+
+bool parse_in(const std::string& text, std::vector<InBeat>& beats, std::string& error) {
+    std::vector<uint64_t> values;
+    if (!parse_hex_lines(text, kInHexDigits, values, error)) return false;
+    beats.clear();
+    for (uint64_t v : values) {
+        if (v >> kInBits) {
+            error = "input beat " + hex(v, kInHexDigits) + " uses bits above " +
+                    std::to_string(kInBits - 1);
+            return false;
+        }
+        InBeat b;
+        b.pixel = static_cast<uint8_t>(v & 0xFF);
+        b.tuser = (v >> kInTuserBit) & 1;
+        b.tlast = (v >> kInTlastBit) & 1;
+        b.height = static_cast<uint16_t>(v >> kInHeightLsb);
+        beats.push_back(b);
+    }
+    return true;
+}
+
+bool parse_out(const std::string& text, std::vector<OutBeat>& beats, std::string& error) {
+    std::vector<uint64_t> values;
+    if (!parse_hex_lines(text, kOutHexDigits, values, error)) return false;
+    beats.clear();
+    for (uint64_t v : values) {
+        if (v >> kOutBits) {
+            error = "output beat " + hex(v, kOutHexDigits) + " uses bits above " +
+                    std::to_string(kOutBits - 1);
+            return false;
+        }
+        OutBeat b;
+        b.word = static_cast<gradient_word>(v & 0xFFFFFFFFu);
+        b.tuser = (v >> kOutTuserBit) & 1;
+        b.tlast = (v >> kOutTlastBit) & 1;
+        beats.push_back(b);
+    }
+    return true;
+}
+
+std::string manifest_header() {
+    return "# Golden vectors of the gradient block, written by qt_vectors (hw_model/).\n"
+           "# Format: docs/gradient.md. Regenerate: build/host/hw_model/qt_vectors --write .\n"
+           "# name sizes frames seed in_beats out_beats errors max_width fnv1a64\n";
+}
+
+std::string format_manifest_line(const ManifestEntry& e) {
+    return e.name + " " + e.sizes + " " + std::to_string(e.frames) + " " +
+           std::to_string(e.seed) + " " + std::to_string(e.in_beats) + " " +
+           std::to_string(e.out_beats) + " " + std::to_string(e.errors) + " " +
+           std::to_string(e.max_width) + " " + hex(e.hash, 16) + "\n";
+}
+
+bool parse_manifest(const std::string& text, std::vector<ManifestEntry>& entries,
+                    std::string& error) {
+    entries.clear();
+    std::istringstream in(text);
+    std::string line;
+    size_t number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream fields(line);
+        ManifestEntry e;
+        std::string hash;
+        if (!(fields >> e.name >> e.sizes >> e.frames >> e.seed >> e.in_beats >> e.out_beats >>
+              e.errors >> e.max_width >> hash) ||
+            hash.size() != 16) {
+            error = "manifest line " + std::to_string(number) + " malformed: '" + line + "'";
+            return false;
+        }
+        e.hash = std::stoull(hash, nullptr, 16);
+        entries.push_back(e);
+    }
+    return true;
+}
+
+uint64_t fnv1a64(const std::string& bytes, uint64_t hash) {
+    for (unsigned char c : bytes) {
+        hash ^= c;
+        hash *= 0x100000001b3ULL;
+    }
+    return hash;
+}
+
+std::string verilog_header() {
+    std::string s =
+        "// Generated by qt_vectors from core/gradient_word.h and hw_model/vector_format.h.\n"
+        "// Do not edit: the test command regenerates it and fails if it differs.\n";
+    auto def = [&s](const char* name, int value) {
+        s += std::string("`define ") + name + " " + std::to_string(value) + "\n";
+    };
+    def("QT_GW_WIDTH", gw::kWordBits);
+    def("QT_GW_GX_LSB", gw::kGxLsb);
+    def("QT_GW_GX_BITS", gw::kGxBits);
+    def("QT_GW_GY_LSB", gw::kGyLsb);
+    def("QT_GW_GY_BITS", gw::kGyBits);
+    def("QT_GW_MAG_LSB", gw::kMagLsb);
+    def("QT_GW_MAG_BITS", gw::kMagBits);
+    def("QT_GW_DIR_LSB", gw::kDirLsb);
+    def("QT_GW_DIR_BITS", gw::kDirBits);
+    def("QT_VEC_IN_HEIGHT_LSB", kInHeightLsb);
+    def("QT_VEC_IN_TLAST_BIT", kInTlastBit);
+    def("QT_VEC_IN_TUSER_BIT", kInTuserBit);
+    def("QT_VEC_IN_BITS", kInBits);
+    def("QT_VEC_OUT_TLAST_BIT", kOutTlastBit);
+    def("QT_VEC_OUT_TUSER_BIT", kOutTuserBit);
+    def("QT_VEC_OUT_BITS", kOutBits);
+    return s;
+}
+
+}  // namespace qt::vec
