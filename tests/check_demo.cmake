@@ -1,6 +1,7 @@
-# Runs `quadtrack demo --out OUT` and checks that each picture exists and is a PNG.
+# Runs `quadtrack demo --out OUT` (through EMULATOR when cross-compiled) and checks that
+# each picture exists and is a PNG.
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${QUADTRACK} demo --out ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+execute_process(COMMAND ${EMULATOR} ${QUADTRACK} demo --out ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 message("${out}")
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "quadtrack demo exited with ${rc}")

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# README command two: every test. Host Release and ASan+UBSan builds (Catch2, golden vectors,
+# Icarus Verilog benches), the Cortex-M4 firmware under qemu-system-arm, and the aarch64
+# build of the test suite under qemu-aarch64.
+set -euo pipefail
+cd "$(dirname "$0")"
+source platform/ensure_packages.sh
+ensure_packages cmake make g++ catch2 iverilog gcc-arm-none-eabi libnewlib-arm-none-eabi \
+    qemu-system-arm g++-aarch64-linux-gnu qemu-user
+jobs=$(nproc)
+for preset in host host-sanitize cortex-m4 aarch64-linux; do
+    echo "=== $preset"
+    cmake --preset "$preset" >/dev/null
+    cmake --build --preset "$preset" -j"$jobs"
+    ctest --preset "$preset" -j"$jobs"
+done
