@@ -7,6 +7,7 @@
 // row arrives, so a frame of H rows makes exactly H sink calls.
 #pragma once
 #include <stdint.h>
+#include <string.h>
 
 #include "gradient_word.h"
 #include "status.h"
@@ -59,7 +60,7 @@ public:
             gradient_row(above, prev, pixels, width_, out_);
             sink(static_cast<uint16_t>(y - 1), static_cast<const gradient_word*>(out_), width_);
         }
-        for (uint16_t x = 0; x < width_; ++x) slot_y[x] = pixels[x];
+        memcpy(slot_y, pixels, width_);
         if (y + 1u == height_) {
             // Last row: its lower neighbour is itself (replicated border).
             gradient_row(y == 0 ? slot_y : prev, slot_y, slot_y, width_, out_);

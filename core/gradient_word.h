@@ -26,23 +26,31 @@ static_assert(255 + 255 <= static_cast<int>(field_mask(kMagBits)), "L1 magnitude
 static_assert(kGxBits == 9 && kGyBits == 9, "accessors below sign-extend 9-bit fields");
 }  // namespace gw
 
-// 51·v and 171·v by shifts and adds: the slopes tan(11.25°) ≈ 51/256 and tan(33.75°) ≈
-// 171/256 that separate the direction bins. Written out so C++ and Verilog read the same.
-constexpr uint32_t times_51(uint32_t v) { return (v << 5) + (v << 4) + (v << 1) + v; }
-constexpr uint32_t times_171(uint32_t v) { return (v << 7) + (v << 5) + (v << 3) + (v << 1) + v; }
+// The slopes tan(11.25°) ≈ 51/256 and tan(33.75°) ≈ 171/256 that separate the direction
+// bins. hdl/gradient_direction.v forms 51·v and 171·v by shifts and adds (no multiplier
+// block); here the compiler picks (one MUL on Cortex-M4, shift-adds elsewhere). Same values.
+constexpr uint32_t times_51(uint32_t v) { return v * 51u; }
+constexpr uint32_t times_171(uint32_t v) { return v * 171u; }
 
 // Direction bin of (gx, gy): bin k is centred on k·22.5°, angle measured from +x towards +y
 // (image coordinates, y down: clockwise on screen). Boundaries at ±11.25° and ±33.75° around
 // each axis come from the slopes above; a boundary value goes to the bin nearer the axis.
-// (0, 0) gives bin 0. Shifts, adds and compares only, as the FPGA block does it.
+// (0, 0) gives bin 0. Compares and constant multiplies only (shift-adds in logic), no table
+// and no branches, so per-pixel loops vectorise on hosts and stay short on Cortex-M.
 constexpr uint32_t direction_bin(int32_t gx, int32_t gy) {
     const uint32_t ax = static_cast<uint32_t>(gx < 0 ? -gx : gx);
     const uint32_t ay = static_cast<uint32_t>(gy < 0 ? -gy : gy);
-    const uint32_t lo = ay <= ax ? ay : ax, hi = ay <= ax ? ax : ay;
-    uint32_t s = (lo << 8) <= times_51(hi) ? 0u : (lo << 8) <= times_171(hi) ? 1u : 2u;
-    if (ay > ax) s = 4u - s;  // 45°..90°: mirror of 0°..45° about the diagonal
-    if (gy >= 0) return gx >= 0 ? s : 8u - s;
-    return gx < 0 ? 8u + s : (16u - s) & 15u;
+    const uint32_t steep = ay > ax;  // 45°..90° within the quadrant
+    const uint32_t lo = steep ? ax : ay, hi = steep ? ay : ax;
+    // Sector 0..2 within 0°..45°, mirrored about the diagonal to 4..2 when steep.
+    const uint32_t s = static_cast<uint32_t>((lo << 8) > times_51(hi)) +
+                       static_cast<uint32_t>((lo << 8) > times_171(hi));
+    const uint32_t q = steep ? 4u - s : s;
+    // Quadrants: bin = q (+x,+y), 8 - q (-x,+y), 8 + q (-x,-y), 16 - q (+x,-y), i.e.
+    // 8·[gx < 0] ± q modulo 16, with q negated when exactly one component is negative.
+    const uint32_t nx = gx < 0, ny = gy < 0;
+    const uint32_t negate = 0u - (nx ^ ny);  // all ones or zero
+    return ((nx << 3) + ((q ^ negate) - negate)) & 15u;
 }
 
 // Pack gx, gy (each -255..255) with their L1 magnitude and direction bin.
