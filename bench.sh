@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Benchmarks whose figures the README quotes. Usage: bash bench.sh [NAME...]
+#   gradient-host  core gradient throughput at 640x480, median of repeats (+ OpenCV when installed)
+#   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
+#   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
+#   fpga           iCE40 UP5K and HX8K logic cells, block RAMs and Fmax (yosys + nextpnr)
+# With no NAME, runs them all.
+set -euo pipefail
+cd "$(dirname "$0")"
+source platform/ensure_packages.sh
+jobs=$(nproc)
+names=("$@")
+[ ${#names[@]} -gt 0 ] || names=(gradient-host gradient-m4 hdl-latency fpga)
+
+host_build() {
+    ensure_packages cmake make g++ catch2 iverilog
+    cmake --preset host >/dev/null
+    cmake --build --preset host -j"$jobs" --target "$@" >/dev/null
+}
+
+for name in "${names[@]}"; do
+    echo "=== $name"
+    case "$name" in
+        gradient-host)
+            host_build bench_gradient
+            ./build/host/platform/bench_gradient ;;
+        gradient-m4)
+            ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+            cmake --preset cortex-m4 >/dev/null
+            cmake --build --preset cortex-m4 -j"$jobs" >/dev/null
+            qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic \
+                -semihosting-config enable=on,target=native -icount shift=0 \
+                -kernel build/cortex-m4/platform/cortex_m/gradient_bench.elf ;;
+        hdl-latency)
+            host_build all
+            (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;
+        fpga)
+            ensure_packages yosys nextpnr-ice40 fpga-icestorm
+            bash hdl/synth/ice40.sh ;;
+        *)
+            echo "unknown benchmark '$name'" >&2
+            exit 2 ;;
+    esac
+done
