@@ -206,6 +206,10 @@ int main() {
     sh_dec(stack_peak_bytes());
     sh_write(" of ");
     sh_dec(stack_size_bytes());
+    sh_write(" bytes; GradientStage<640> ");
+    sh_dec(sizeof g_stage);
+    sh_write(" bytes + row buffer ");
+    sh_dec(sizeof g_row);
     sh_write(" bytes\n");
     return passed == kCount ? 0 : 1;
 }
