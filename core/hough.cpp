@@ -1,0 +1,274 @@
+#include "hough.h"
+
+#include "isqrt.h"
+#include "line_fit.h"
+#include "visit_order.h"
+
+namespace qt {
+
+namespace {
+
+int rho_shift_of(uint16_t rho_step) {
+    return rho_step == 1 ? 0 : rho_step == 2 ? 1 : rho_step == 4 ? 2 : -1;
+}
+
+// Bins of rho on each side of the centre: ceil(R / rho_step), R = ceil(distance to a corner).
+int32_t rho_half_bins(uint16_t width, uint16_t height, uint16_t rho_step) {
+    const uint32_t hx = (width + 1u) / 2u, hy = (height + 1u) / 2u;
+    const uint32_t r = isqrt32(hx * hx + hy * hy) + 1u;
+    return static_cast<int32_t>((r + rho_step - 1u) / rho_step);
+}
+
+class Ppht {
+public:
+    Ppht(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& p,
+         const HoughWorkspace& ws, HoughStats& stats)
+        : edges_(edges), p_(p), ws_(ws), stats_(stats), width_(width), height_(height),
+          cx_(width / 2), cy_(height / 2), rho_shift_(rho_shift_of(p.rho_step)),
+          rho_half_(rho_half_bins(width, height, p.rho_step)),
+          n_rho_(static_cast<uint32_t>(2 * rho_half_ + 1)) {
+        const uint32_t n = p.theta_bins;
+        window_ = p.vote_window_deg >= 90 ? -1
+                                          : static_cast<int32_t>((p.vote_window_deg * n + 179u) / 180u);
+        if (2 * window_ + 1 >= static_cast<int32_t>(n)) window_ = -1;  // the window covers all θ
+        for (uint32_t t = 0; t < n; ++t) {
+            // θ_t = t·180°/n as a binary angle: t·2^31/n.
+            const SinCos sc = sin_cos(static_cast<angle_t>((static_cast<uint64_t>(t) << 31) / n));
+            ws.cos_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.cos.raw, 16));
+            ws.sin_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.sin.raw, 16));
+        }
+        for (uint32_t i = 0; i < n * n_rho_; ++i) ws.bins[i] = 0;
+    }
+
+    void run(Segment* out, uint16_t capacity, uint16_t* count) {
+        *count = 0;
+        const VisitOrder order(edges_.size(), p_.seed);
+        for (uint32_t k = 0; k < edges_.size() && !stats_.budget_exhausted; ++k) {
+            const uint16_t i = static_cast<uint16_t>(order.at(k));
+            const edge_point pt = edges_[i];
+            if (ep::state(pt) != ep::kFresh) continue;
+            edges_[i] = ep::with_state(pt, ep::kVoted);
+            ++stats_.points_visited;
+            uint32_t best_t = 0;
+            const uint32_t best = vote(pt, +1, &best_t);
+            if (best < p_.threshold) continue;
+            ++stats_.lines_followed;
+            Segment s;
+            if (follow(i, best_t, s)) {
+                if (*count < capacity) {
+                    out[(*count)++] = s;
+                    ++stats_.segments;
+                } else {
+                    ++stats_.segments_dropped;
+                }
+            }
+        }
+    }
+
+private:
+    // Casts (+1) or withdraws (-1) the point's votes; returns the highest count among its bins
+    // and that bin's θ index.
+    uint32_t vote(edge_point pt, int delta, uint32_t* best_t) {
+        const int32_t n = p_.theta_bins;
+        const int32_t x = static_cast<int32_t>(ep::x(pt)) - cx_, y = static_cast<int32_t>(ep::y(pt)) - cy_;
+        int32_t first = 0, last = n - 1;
+        if (window_ >= 0) {
+            // Normal orientation of direction bin d: (d mod 8)·22.5°, as a θ index, rounded.
+            const int32_t centre = (static_cast<int32_t>(ep::dir(pt) & 7u) * n * 2 + 8) / 16;
+            first = centre - window_;
+            last = centre + window_;
+        }
+        uint32_t best = 0;
+        for (int32_t j = first; j <= last; ++j) {
+            const int32_t t = j < 0 ? j + n : j >= n ? j - n : j;
+            const int32_t v = x * ws_.cos_q14[t] + y * ws_.sin_q14[t];  // rho, 1.0 = 2^14
+            const int32_t r = ((v + (1 << (13 + rho_shift_))) >> (14 + rho_shift_)) + rho_half_;
+            uint8_t& bin = ws_.bins[static_cast<uint32_t>(t) * n_rho_ + static_cast<uint32_t>(r)];
+            if (delta > 0) {
+                ++stats_.votes;
+                if (bin == 255) ++stats_.saturated_votes;
+                else ++bin;
+                if (bin > best) {
+                    best = bin;
+                    *best_t = static_cast<uint32_t>(t);
+                }
+            } else if (bin > 0) {
+                --bin;
+            }
+        }
+        return best;
+    }
+
+    // The line being followed: minor = anchor_minor + (major - anchor_major)·slope, in 1/32 px.
+    struct Track {
+        bool major_is_y;
+        int32_t anchor_major32, anchor_minor32;
+        int32_t slope_q16;  // d minor / d major
+    };
+
+    static int32_t major_of(const Track& tr, int32_t x, int32_t y) { return tr.major_is_y ? y : x; }
+    static int32_t minor_of(const Track& tr, int32_t x, int32_t y) { return tr.major_is_y ? x : y; }
+
+    static void set_direction(Track& tr, int32_t dx, int32_t dy) {
+        const int64_t dmaj = tr.major_is_y ? dy : dx, dmin = tr.major_is_y ? dx : dy;
+        // |slope| <= 2: beyond that the other axis would be the major one; the walk keeps its
+        // axis for the whole line, and a line turning past 63° is not one line.
+        const int64_t limit = int64_t{2} << 16;
+        int64_t s = dmaj == 0 ? limit : dmin * 65536 / dmaj;
+        s = s > limit ? limit : s < -limit ? -limit : s;
+        tr.slope_q16 = static_cast<int32_t>(s);
+    }
+
+    static void refit(Track& tr, const Moments& m, int32_t ax32, int32_t ay32) {
+        FittedLine line;
+        if (!fit_line(m, ax32, ay32, line)) return;
+        const int32_t mx32 = static_cast<int32_t>(shr_round_half_away(line.mx.raw, 11));
+        const int32_t my32 = static_cast<int32_t>(shr_round_half_away(line.my.raw, 11));
+        tr.anchor_major32 = major_of(tr, mx32, my32);
+        tr.anchor_minor32 = minor_of(tr, mx32, my32);
+        set_direction(tr, line.dx.raw, line.dy.raw);
+    }
+
+    // Predicted minor coordinate (whole pixels) at whole-pixel major coordinate `major`.
+    static int32_t predict(const Track& tr, int32_t major) {
+        const int64_t d = static_cast<int64_t>(major) * 32 - tr.anchor_major32;
+        const int64_t minor32 = tr.anchor_minor32 + ((d * tr.slope_q16) >> 16);
+        return static_cast<int32_t>((minor32 + 16) >> 5);
+    }
+
+    // The nearest edge point to (major, minor) within the corridor, or -1; an unconsumed one
+    // when there is one. *fresh says which: points consumed by an earlier segment still mark
+    // where the edge runs (at a corner two lines share pixels), so they extend a segment but
+    // are not fitted again.
+    int32_t find_near(const Track& tr, int32_t major, int32_t minor, bool* fresh) const {
+        int32_t consumed = -1;
+        for (int32_t k = 0; k <= 2 * static_cast<int32_t>(p_.corridor); ++k) {
+            const int32_t off = (k & 1) ? -(k + 1) / 2 : k / 2;  // 0, -1, +1, -2, +2, ...
+            const int32_t mn = minor + off;
+            const int32_t i = tr.major_is_y ? edges_.find(mn, major) : edges_.find(major, mn);
+            if (i < 0) continue;
+            if (ep::state(edges_[static_cast<uint16_t>(i)]) != ep::kConsumed) {
+                *fresh = true;
+                return i;
+            }
+            if (consumed < 0) consumed = i;
+        }
+        *fresh = false;
+        return consumed;
+    }
+
+    bool spend_step() {
+        if (stats_.walk_steps >= p_.max_walk_steps) {
+            stats_.budget_exhausted = true;
+            return false;
+        }
+        ++stats_.walk_steps;
+        return true;
+    }
+
+    // Follows the line of θ bin `t` through seed point `seed`; true with the segment when it
+    // is long enough (its points are then consumed and their votes withdrawn).
+    bool follow(uint16_t seed, uint32_t t, Segment& out) {
+        const edge_point sp = edges_[seed];
+        const int32_t sx32 = ep::x32(sp), sy32 = ep::y32(sp);
+        Track tr{};
+        // Normal (cos θ, sin θ); the line runs along (−sin θ, cos θ).
+        const int32_t c = ws_.cos_q14[t], s = ws_.sin_q14[t];
+        tr.major_is_y = (c < 0 ? -c : c) > (s < 0 ? -s : s);
+        tr.anchor_major32 = major_of(tr, sx32, sy32);
+        tr.anchor_minor32 = minor_of(tr, sx32, sy32);
+        set_direction(tr, -s, c);
+
+        Moments m;
+        m.add(0, 0);
+        int32_t end32[2][2] = {{sx32, sy32}, {sx32, sy32}};  // last hit each way: x32, y32
+        const int32_t extent = tr.major_is_y ? height_ : width_;
+        const int32_t seed_major = major_of(tr, static_cast<int32_t>(ep::x(sp)), static_cast<int32_t>(ep::y(sp)));
+        for (int way = 0; way < 2; ++way) {
+            const int32_t step = way == 0 ? 1 : -1;
+            int32_t gap = 0;
+            for (int32_t major = seed_major + step; major >= 0 && major < extent; major += step) {
+                if (!spend_step()) return false;
+                bool fresh = false;
+                const int32_t i = find_near(tr, major, predict(tr, major), &fresh);
+                if (i < 0) {
+                    if (++gap > p_.max_line_gap) break;
+                    continue;
+                }
+                gap = 0;
+                const edge_point hp = edges_[static_cast<uint16_t>(i)];
+                end32[way][0] = ep::x32(hp);
+                end32[way][1] = ep::y32(hp);
+                if (!fresh) continue;
+                m.add(end32[way][0] - sx32, end32[way][1] - sy32);
+                if ((m.n & 7) == 0) refit(tr, m, sx32, sy32);
+            }
+        }
+        FittedLine line;
+        fit_line(m, sx32, sy32, line);
+        q16_16 t1 = along(line, q16_16::from_raw(int64_t{end32[1][0]} * 2048), q16_16::from_raw(int64_t{end32[1][1]} * 2048));
+        q16_16 t2 = along(line, q16_16::from_raw(int64_t{end32[0][0]} * 2048), q16_16::from_raw(int64_t{end32[0][1]} * 2048));
+        if (t2 < t1) {
+            const q16_16 tmp = t1;
+            t1 = t2;
+            t2 = tmp;
+        }
+        if (static_cast<int64_t>(t2.raw) - t1.raw < static_cast<int64_t>(p_.min_line_length) << 16) return false;
+
+        // Consume every point in the corridor of the final line between the two ends.
+        refit(tr, m, sx32, sy32);
+        const int32_t a = (major_of(tr, end32[1][0], end32[1][1]) + 16) >> 5;
+        const int32_t b = (major_of(tr, end32[0][0], end32[0][1]) + 16) >> 5;
+        for (int32_t major = a < b ? a : b; major <= (a < b ? b : a); ++major) {
+            if (!spend_step()) break;
+            const int32_t pred = predict(tr, major);
+            for (int32_t off = -static_cast<int32_t>(p_.corridor); off <= static_cast<int32_t>(p_.corridor); ++off) {
+                const int32_t i = tr.major_is_y ? edges_.find(pred + off, major) : edges_.find(major, pred + off);
+                if (i < 0) continue;
+                edge_point& e = edges_[static_cast<uint16_t>(i)];
+                if (ep::state(e) == ep::kVoted) {
+                    uint32_t unused = 0;
+                    vote(e, -1, &unused);
+                }
+                e = ep::with_state(e, ep::kConsumed);
+            }
+        }
+        out = make_segment(line, t1, t2, static_cast<uint16_t>(m.n > 65535 ? 65535 : m.n));
+        return true;
+    }
+
+    EdgeList& edges_;
+    const HoughParams& p_;
+    const HoughWorkspace& ws_;
+    HoughStats& stats_;
+    int32_t width_, height_, cx_, cy_;
+    int rho_shift_;
+    int32_t rho_half_;
+    uint32_t n_rho_;
+    int32_t window_ = -1;  // θ bins either side of the gradient's; -1 = vote every θ
+};
+
+}  // namespace
+
+uint32_t hough_bins_needed(uint16_t width, uint16_t height, const HoughParams& params) {
+    if (rho_shift_of(params.rho_step) < 0) return 0;
+    return static_cast<uint32_t>(params.theta_bins) *
+           static_cast<uint32_t>(2 * rho_half_bins(width, height, params.rho_step) + 1);
+}
+
+Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& params,
+                      const HoughWorkspace& ws, Segment* out, uint16_t out_capacity,
+                      uint16_t* count, HoughStats* stats) {
+    *count = 0;
+    *stats = HoughStats{};
+    if (width == 0 || height == 0 || width > ep::kMaxCoordinate + 1 || height > ep::kMaxCoordinate + 1 ||
+        edges.height() != height || rho_shift_of(params.rho_step) < 0 || params.theta_bins < 2 ||
+        params.theta_bins > ws.theta_capacity || params.threshold == 0 || params.threshold > 255 ||
+        hough_bins_needed(width, height, params) > ws.bin_capacity)
+        return Status::bad_size;
+    Ppht ppht(edges, width, height, params, ws, *stats);
+    ppht.run(out, out_capacity, count);
+    return Status::ok;
+}
+
+}  // namespace qt

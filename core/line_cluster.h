@@ -1,0 +1,39 @@
+// Clustering of duplicate segments (section 2.4 of quadrangle-3kf): one strong edge often
+// comes out of PPHT as several short segments. Two segments are similar when their closest
+// points to the origin are near, S(li, lj) = |Ci − Cj| <= distance, as in the paper, AND their
+// orientations are near: two different lines through (or near) the origin both have C ≈ (0, 0)
+// and the paper's measure alone would merge them. Each cluster is refitted from all its
+// members (total least squares over their points, each member standing for its points spread
+// evenly along it), not represented by its longest member.
+#pragma once
+#include <stdint.h>
+
+#include "angle.h"
+#include "fixed.h"
+#include "segment.h"
+#include "status.h"
+
+namespace qt {
+
+struct ClusterParams {
+    q16_16 distance = q16_16::from_int(6);  // |Ci − Cj| threshold, pixels
+    angle_t max_angle = angle_from_deg(4);  // orientation difference (mod 180°) threshold
+    q16_16 gap = q16_16::from_int(24);      // largest gap between merged segments along the line, px
+};
+
+struct ClusterStats {
+    uint16_t clusters = 0;
+    uint16_t clusters_dropped = 0;  // clusters found with the output full
+};
+
+// Orientation difference of two line normals modulo 180°, in [0°, 90°].
+angle_t orientation_difference(angle_t a, angle_t b);
+
+// Greedy clustering: the segment with most points seeds a cluster, which takes every unused
+// segment similar to the seed; repeat. O(n²) similarity tests for n segments, n <= 255.
+// `scratch` needs n bytes. Writes the refitted lines to out[0 .. *count).
+Status cluster_segments(const Segment* in, uint16_t n, const ClusterParams& params,
+                        uint8_t* scratch, Segment* out, uint16_t capacity, uint16_t* count,
+                        ClusterStats* stats);
+
+}  // namespace qt

@@ -1,0 +1,132 @@
+// The lines stage of one frame, all memory inside, fixed at compile time: gradient (or words
+// from the FPGA) -> edges -> PPHT segments -> clustered lines.
+//
+//   static qt::LineDetectorQvga det;           // ~44 KiB, see ram_bytes()
+//   det.begin_frame(320, 240, params);
+//   for each camera row: det.push_row(row, 320);        // or push_gradient_row(words, 320)
+//   det.finish();                              // runs PPHT and clustering
+//   det.lines(), det.line_count(), det.stats()
+#pragma once
+#include <stdint.h>
+
+#include "edge_stage.h"
+#include "gradient_stage.h"
+#include "hough.h"
+#include "line_cluster.h"
+
+namespace qt {
+
+struct LineParams {
+    uint16_t edge_threshold = 40;  // L1 gradient magnitude for an edge, grey levels (1..510)
+    HoughParams hough;
+    ClusterParams cluster;
+};
+
+struct LineStats {
+    uint32_t edges = 0;           // edge points kept
+    uint32_t edges_dropped = 0;   // edge points lost to the edge capacity
+    HoughStats hough;
+    ClusterStats cluster;
+};
+
+// Largest distance from the centre of a w × h frame to a corner, whole pixels, rounded up +1:
+// the rho range of the accumulator (compile-time twin of hough.cpp's rho_half_bins).
+constexpr uint32_t hough_bins_for(uint32_t w, uint32_t h, uint32_t theta_bins, uint32_t rho_step) {
+    const uint32_t hx = (w + 1) / 2, hy = (h + 1) / 2, r2 = hx * hx + hy * hy;
+    uint32_t r = 0;
+    while ((r + 1) * (r + 1) <= r2) ++r;
+    return theta_bins * (2 * ((r + 1 + rho_step - 1) / rho_step) + 1);
+}
+
+template <uint16_t MaxWidth, uint16_t MaxHeight, uint16_t EdgeCapacity, uint32_t HoughBins,
+          uint16_t MaxThetaBins, uint16_t MaxSegments, uint16_t MaxLines>
+class LineDetector {
+    static_assert(MaxSegments <= 255, "clustering handles up to 255 segments");
+
+public:
+    // Bytes of RAM one detector occupies (all of it static when the object is).
+    static constexpr uint32_t ram_bytes() { return sizeof(LineDetector); }
+
+    Status begin_frame(uint16_t width, uint16_t height, const LineParams& params) {
+        params_ = params;
+        stats_ = LineStats{};
+        segment_count_ = line_count_ = 0;
+        finished_ = false;
+        if (height > MaxHeight) return Status::bad_size;
+        edges_view_ = edges_.view();
+        Status s = gradient_.begin_frame(width, height);
+        if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
+        const Status e = edge_stage_.begin_frame(width, height, params.edge_threshold, edges_view_);
+        if (e != Status::ok) return e;
+        width_ = width;
+        height_ = height;
+        return s;
+    }
+
+    // A camera row (grey levels).
+    Status push_row(const uint8_t* pixels, uint16_t length) {
+        Status edge_status = Status::ok;
+        const Status s = gradient_.push_row(pixels, length, [&](uint16_t, const gradient_word* w, uint16_t n) {
+            const Status e = edge_stage_.push_row(w, n);
+            if (e != Status::ok) edge_status = e;
+        });
+        return s != Status::ok ? s : edge_status;
+    }
+
+    // A row of gradient words (from the FPGA block), instead of push_row.
+    Status push_gradient_row(const gradient_word* words, uint16_t width) {
+        return edge_stage_.push_row(words, width);
+    }
+
+    // After the last row: PPHT and clustering. not_in_frame if rows are missing.
+    Status finish() {
+        if (edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
+            return Status::not_in_frame;
+        stats_.edges = edges_view_.size();
+        stats_.edges_dropped = edges_view_.dropped();
+        const Status h = hough_segments(edges_view_, width_, height_, params_.hough, hough_.view(),
+                                        segments_, MaxSegments, &segment_count_, &stats_.hough);
+        if (h != Status::ok) return h;
+        const Status c = cluster_segments(segments_, segment_count_, params_.cluster, scratch_,
+                                          lines_, MaxLines, &line_count_, &stats_.cluster);
+        finished_ = c == Status::ok;
+        return c;
+    }
+
+    const Segment* segments() const { return segments_; }
+    uint16_t segment_count() const { return segment_count_; }
+    const Segment* lines() const { return lines_; }
+    uint16_t line_count() const { return line_count_; }
+    const LineStats& stats() const { return stats_; }
+    const EdgeList& edges() const { return edges_view_; }
+
+    // RAM of the parts, bytes, for the README's table.
+    static constexpr uint32_t gradient_bytes() { return sizeof(GradientStage<MaxWidth>); }
+    static constexpr uint32_t edge_stage_bytes() { return sizeof(EdgeStage<MaxWidth>); }
+    static constexpr uint32_t edge_list_bytes() { return sizeof(EdgeListStorage<EdgeCapacity, MaxHeight>); }
+    static constexpr uint32_t accumulator_bytes() { return sizeof(HoughStorage<HoughBins, MaxThetaBins>); }
+    static constexpr uint32_t line_list_bytes() {
+        return sizeof(Segment) * (MaxSegments + MaxLines) + MaxSegments;
+    }
+
+private:
+    GradientStage<MaxWidth> gradient_;
+    EdgeStage<MaxWidth> edge_stage_;
+    EdgeListStorage<EdgeCapacity, MaxHeight> edges_;
+    EdgeList edges_view_ = edges_.view();
+    HoughStorage<HoughBins, MaxThetaBins> hough_;
+    Segment segments_[MaxSegments] = {};
+    Segment lines_[MaxLines] = {};
+    uint8_t scratch_[MaxSegments] = {};
+    LineParams params_;
+    LineStats stats_;
+    uint16_t width_ = 0, height_ = 0, segment_count_ = 0, line_count_ = 0;
+    bool finished_ = false;
+};
+
+// QVGA: 320 × 240, 4096 edge points, 2° × 2 px accumulator, 64 segments, 32 lines.
+using LineDetectorQvga = LineDetector<320, 240, 4096, hough_bins_for(320, 240, 90, 2), 90, 64, 32>;
+// VGA: 640 × 480, 8192 edge points, 2° × 2 px accumulator, 128 segments, 64 lines.
+using LineDetectorVga = LineDetector<640, 480, 8192, hough_bins_for(640, 480, 90, 2), 90, 128, 64>;
+
+}  // namespace qt
