@@ -213,7 +213,11 @@ private:
             t1 = t2;
             t2 = tmp;
         }
-        if (static_cast<int64_t>(t2.raw) - t1.raw < static_cast<int64_t>(p_.min_line_length) << 16) return false;
+        // Long enough, and carried by enough points of its own: a run along points consumed by
+        // an earlier segment with a few new ones is that segment again, not a new line.
+        if (static_cast<int64_t>(t2.raw) - t1.raw < static_cast<int64_t>(p_.min_line_length) << 16 ||
+            m.n < p_.threshold)
+            return false;
 
         // Consume every point in the corridor of the final line between the two ends.
         refit(tr, m, sx32, sy32);

@@ -1,6 +1,8 @@
-// qt_vectors: writes or checks the golden vectors of the gradient block and the Verilog
-// include generated from the gradient-word definition.
-//   qt_vectors --write ROOT            regenerate ROOT/vectors/gradient/ and ROOT/hdl/gradient_word.vh
+// qt_vectors: writes or checks the golden vectors of the gradient block, the Verilog include
+// generated from the gradient-word definition, and the lines stage's test frames with their
+// expected lines.
+//   qt_vectors --write ROOT            regenerate ROOT/vectors/gradient/, ROOT/vectors/scenes/ and
+//                                      ROOT/hdl/gradient_word.vh
 //   qt_vectors --check ROOT            exit 1 unless every committed file equals a fresh generation
 //   qt_vectors --direction-table FILE  expected direction bin of every (gx, gy), gx outer, gy inner,
 //                                      -255..255 each, one hex digit per line (hdl/tb_direction.v)
@@ -12,6 +14,7 @@
 
 #include "gradient_cases.h"
 #include "gradient_model.h"
+#include "scene_cases.h"
 
 namespace {
 
@@ -33,6 +36,10 @@ Files generate() {
         manifest += format_manifest_line(e);
     }
     files["vectors/gradient/manifest.txt"] = manifest;
+    for (const SceneCase& c : scene_cases()) {
+        files["vectors/scenes/" + c.name + ".pgm"] = format_pgm(c.frame);
+        files["vectors/scenes/" + c.name + ".lines.txt"] = lines_text(c);
+    }
     files["hdl/gradient_word.vh"] = verilog_header();
     return files;
 }
@@ -54,7 +61,7 @@ int write_all(const std::string& root) {
             return 1;
         }
     }
-    std::printf("wrote vectors/gradient/ and hdl/gradient_word.vh under %s\n", root.c_str());
+    std::printf("wrote vectors/gradient/, vectors/scenes/ and hdl/gradient_word.vh under %s\n", root.c_str());
     return 0;
 }
 
