@@ -2,6 +2,8 @@
 # Benchmarks whose figures the README quotes. Usage: bash bench.sh [NAME...]
 #   gradient-host  core gradient throughput at 640x480, median of repeats (+ OpenCV when installed)
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
+#   lines-host     lines stage accuracy table, vote window, VGA time vs OpenCV, RAM table
+#   lines-m4       instructions per stage of the QVGA lines detector on Cortex-M4 (QEMU -icount)
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
 #   fpga           iCE40 UP5K and HX8K logic cells, block RAMs and Fmax (yosys + nextpnr)
 # With no NAME, runs them all.
@@ -10,7 +12,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host gradient-m4 hdl-latency fpga)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host gradient-m4 lines-m4 hdl-latency fpga)
 
 host_build() {
     ensure_packages cmake make g++ catch2 iverilog
@@ -24,6 +26,9 @@ for name in "${names[@]}"; do
         gradient-host)
             host_build bench_gradient
             ./build/host/platform/bench_gradient ;;
+        lines-host)
+            host_build bench_lines
+            ./build/host/platform/bench_lines ;;
         gradient-m4)
             ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
             cmake --preset cortex-m4 >/dev/null
@@ -31,6 +36,13 @@ for name in "${names[@]}"; do
             qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic \
                 -semihosting-config enable=on,target=native -icount shift=0 \
                 -kernel build/cortex-m4/platform/cortex_m/gradient_bench.elf ;;
+        lines-m4)
+            ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+            cmake --preset cortex-m4 >/dev/null
+            cmake --build --preset cortex-m4 -j"$jobs" >/dev/null
+            qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic \
+                -semihosting-config enable=on,target=native -icount shift=0 \
+                -kernel build/cortex-m4/platform/cortex_m/lines_bench.elf ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;

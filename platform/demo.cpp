@@ -6,6 +6,8 @@
 
 #include "board_scene.h"
 #include "gradient_stage.h"
+#include "line_detector.h"
+#include "overlay.h"
 #include "png_writer.h"
 
 namespace qt::cli {
@@ -83,9 +85,39 @@ int run_demo(const std::string& out_dir) {
     std::printf("strong pixels per direction bin (22.5 deg each, 0 = +x, 4 = +y/down):");
     for (uint32_t n : strong_per_bin) std::printf(" %u", n);
     std::printf("\n");
-    const bool ok = save(out_dir + "/input.png", w, h, 1, frame.pixels) &&
-                    save(out_dir + "/gradient_magnitude.png", w, h, 1, magnitude) &&
-                    save(out_dir + "/gradient_direction.png", w, h, 3, direction);
+    bool ok = save(out_dir + "/input.png", w, h, 1, frame.pixels) &&
+              save(out_dir + "/gradient_magnitude.png", w, h, 1, magnitude) &&
+              save(out_dir + "/gradient_direction.png", w, h, 3, direction);
+
+    // Lines stage: edges (blue), PPHT segments (yellow), clustered lines (red).
+    static LineDetectorVga lines;  // 86 KB: static, as firmware would keep it
+    s = lines.begin_frame(static_cast<uint16_t>(w), static_cast<uint16_t>(h), LineParams{});
+    for (int y = 0; y < h && s == Status::ok; ++y) s = lines.push_row(frame.row(y), static_cast<uint16_t>(w));
+    if (s == Status::ok) s = lines.finish();
+    if (s != Status::ok) {
+        std::fprintf(stderr, "quadtrack demo: lines stage: %s\n", status_name(s));
+        return 1;
+    }
+    io::RgbImage overlay = io::RgbImage::from_grey(frame, 50);
+    const EdgeList& edges = lines.edges();
+    for (uint16_t i = 0; i < edges.size(); ++i)
+        overlay.set(static_cast<int>(ep::x(edges[i])), static_cast<int>(ep::y(edges[i])), {60, 120, 255});
+    auto draw = [&](const Segment& l, io::Rgb c) {
+        overlay.line(l.x1.raw / 65536.0, l.y1.raw / 65536.0, l.x2.raw / 65536.0, l.y2.raw / 65536.0, c);
+    };
+    for (uint16_t i = 0; i < lines.segment_count(); ++i) draw(lines.segments()[i], {255, 230, 0});
+    for (uint16_t i = 0; i < lines.line_count(); ++i) draw(lines.lines()[i], {255, 40, 40});
+    const LineStats& st = lines.stats();
+    std::printf("lines stage (fixed point, %u B of RAM at VGA): %u edge points, %u PPHT segments, "
+                "%u lines after clustering\n",
+                LineDetectorVga::ram_bytes(), st.edges, lines.segment_count(), lines.line_count());
+    for (uint16_t i = 0; i < lines.line_count(); ++i) {
+        const Segment& l = lines.lines()[i];
+        std::printf("  line %u: (%.2f, %.2f) - (%.2f, %.2f)  rho %.2f px  theta %.2f deg  %u points\n", i,
+                    l.x1.raw / 65536.0, l.y1.raw / 65536.0, l.x2.raw / 65536.0, l.y2.raw / 65536.0,
+                    l.rho.raw / 65536.0, angle_to_deg(l.theta).raw / 65536.0, l.points);
+    }
+    ok = ok && save(out_dir + "/lines.png", w, h, 3, overlay.pixels);
     return ok ? 0 : 1;
 }
 

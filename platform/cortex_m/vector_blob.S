@@ -1,5 +1,5 @@
-/* One golden-vector file linked into flash as bytes, between the symbols
- * <QT_BLOB_SYMBOL>_begin and <QT_BLOB_SYMBOL>_end (not NUL-terminated).
+/* One file (golden vectors, a scene frame, its expected text) linked into flash as bytes,
+ * between the symbols <QT_BLOB_SYMBOL>_begin and <QT_BLOB_SYMBOL>_end (not NUL-terminated).
  * Assembled once per file; CMakeLists.txt defines QT_BLOB_SYMBOL (an identifier) and
  * QT_BLOB_PATH (a quoted absolute path) for each. */
 #define QT_CAT_(a, b) a##b

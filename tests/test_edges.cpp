@@ -1,0 +1,145 @@
+// Edges: NMS along the quantised direction on hand-worked frames, sub-pixel peaks, the edge
+// list's lookups and capacity, and the streaming statuses.
+#include <catch2/catch.hpp>
+#include <vector>
+
+#include "edge_stage.h"
+#include "gradient_stage.h"
+#include "prng.h"
+
+using namespace qt;
+
+namespace {
+
+struct Frame {
+    int w, h;
+    std::vector<uint8_t> px;
+    uint8_t& at(int x, int y) { return px[static_cast<size_t>(y * w + x)]; }
+};
+
+EdgeListStorage<2048, 64> g_storage;
+GradientStage<64> g_gradient;
+EdgeStage<64> g_edges;
+
+EdgeList run(Frame& f, uint16_t threshold) {
+    EdgeList list = g_storage.view();
+    REQUIRE(g_gradient.begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h)) == Status::ok);
+    REQUIRE(g_edges.begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h), threshold, list) == Status::ok);
+    for (int y = 0; y < f.h; ++y)
+        REQUIRE(g_gradient.push_row(&f.at(0, y), static_cast<uint16_t>(f.w),
+                                    [&](uint16_t, const gradient_word* words, uint16_t n) {
+                                        REQUIRE(g_edges.push_row(words, n) == Status::ok);
+                                    }) == Status::ok);
+    REQUIRE_FALSE(g_edges.in_frame());
+    return list;
+}
+
+}  // namespace
+
+TEST_CASE("a vertical step gives one edge per row on its bright side, sub-pixel at the step",
+          "[edges]") {
+    for (bool bright_right : {true, false}) {
+        Frame f{20, 10, std::vector<uint8_t>(200)};
+        for (int y = 0; y < 10; ++y)
+            for (int x = 0; x < 20; ++x) f.at(x, y) = (x >= 10) == bright_right ? 200 : 50;
+        const EdgeList list = run(f, 40);
+        // gx = 150 at columns 9 and 10 (central differences straddle the step), 0 elsewhere;
+        // NMS keeps the one on the bright side, and the parabola through (150, 150, 0) puts
+        // the peak half a pixel back towards the other: at x = 9.5 both ways.
+        REQUIRE(list.size() == 10);
+        for (uint16_t i = 0; i < list.size(); ++i) {
+            INFO("bright_right " << bright_right << " point " << i);
+            REQUIRE(ep::y(list[i]) == i);
+            REQUIRE(ep::x(list[i]) == (bright_right ? 10u : 9u));
+            REQUIRE(ep::dir(list[i]) == (bright_right ? 0u : 8u));
+            REQUIRE(ep::x32(list[i]) == 304);  // 9.5 px · 32
+            REQUIRE(ep::y32(list[i]) == static_cast<int32_t>(32 * i));
+        }
+    }
+}
+
+TEST_CASE("a horizontal step and a diagonal step", "[edges]") {
+    Frame h{12, 12, std::vector<uint8_t>(144)};
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 12; ++x) h.at(x, y) = y >= 6 ? 180 : 20;
+    const EdgeList lh = run(h, 40);
+    REQUIRE(lh.size() == 12);
+    for (uint16_t i = 0; i < lh.size(); ++i) {
+        REQUIRE(ep::y(lh[i]) == 6u);
+        REQUIRE(ep::dir(lh[i]) == 4u);  // +y: down the image
+        REQUIRE(ep::y32(lh[i]) == 5 * 32 + 16);
+    }
+    // Bright below the diagonal (y > x): gx < 0, gy > 0, so 135°, bin 6. Central differences
+    // give the same magnitude to the pixels just either side of the boundary y = x + 0.5, and
+    // those are not neighbours along the 135° axis: both stay, a two-pixel chain whose
+    // positions lie within half a pixel of the boundary.
+    Frame d{16, 16, std::vector<uint8_t>(256)};
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) d.at(x, y) = y > x ? 200 : 40;
+    const EdgeList ld = run(d, 40);
+    REQUIRE(ld.size() >= 12);
+    for (uint16_t i = 0; i < ld.size(); ++i) {
+        INFO("point " << ep::x(ld[i]) << "," << ep::y(ld[i]));
+        REQUIRE(ep::dir(ld[i]) == 6u);
+        REQUIRE((ep::y(ld[i]) == ep::x(ld[i]) || ep::y(ld[i]) == ep::x(ld[i]) + 1));
+        const int32_t off32 = ep::y32(ld[i]) - ep::x32(ld[i]) - 16;  // (y - x - 0.5) · 32
+        REQUIRE(off32 * off32 <= 2 * 16 * 16);                       // distance <= 0.5 px
+    }
+}
+
+TEST_CASE("edges below the threshold are not reported", "[edges]") {
+    Frame f{20, 5, std::vector<uint8_t>(100)};
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 20; ++x) f.at(x, y) = x >= 10 ? 119 : 100;  // gx = 19
+    REQUIRE(run(f, 20).size() == 0);
+    REQUIRE(run(f, 19).size() == 5);
+}
+
+TEST_CASE("edge list lookups agree with a brute-force search; capacity overflow is counted",
+          "[edges]") {
+    EdgeListStorage<300, 40> storage;
+    EdgeList list = storage.view();
+    REQUIRE(list.begin_frame(41) == Status::bad_size);
+    REQUIRE(list.begin_frame(40) == Status::ok);
+    Pcg32 rng(12);
+    std::vector<std::vector<bool>> truth(40, std::vector<bool>(50, false));
+    for (uint16_t y = 0; y < 40; y += 1 + static_cast<uint16_t>(rng.below(3))) {
+        list.begin_row(y);
+        for (uint16_t x = 0; x < 50; ++x)
+            if (rng.below(4) == 0 && list.push(x, 0, 0)) truth[y][x] = true;
+    }
+    list.end_frame();
+    for (int y = -1; y <= 40; ++y)
+        for (int x = -1; x <= 50; ++x) {
+            const int32_t i = list.find(x, y);
+            const bool expected = y >= 0 && y < 40 && x >= 0 && x < 50 && truth[y][x];
+            REQUIRE((i >= 0) == expected);
+            if (i >= 0) {
+                REQUIRE(ep::x(list[static_cast<uint16_t>(i)]) == static_cast<uint32_t>(x));
+                REQUIRE(ep::y(list[static_cast<uint16_t>(i)]) == static_cast<uint32_t>(y));
+            }
+        }
+    // Fill past the capacity.
+    REQUIRE(list.begin_frame(2) == Status::ok);
+    list.begin_row(0);
+    for (uint16_t k = 0; k < 310; ++k) list.push(static_cast<uint16_t>(k % 2000), 0, 0);
+    list.end_frame();
+    REQUIRE(list.size() == 300);
+    REQUIRE(list.dropped() == 10);
+}
+
+TEST_CASE("edge stage statuses: bad sizes, wrong rows, rows after the end", "[edges]") {
+    EdgeList list = g_storage.view();
+    gradient_word words[65] = {};
+    REQUIRE(g_edges.begin_frame(0, 5, 40, list) == Status::bad_size);
+    REQUIRE(g_edges.begin_frame(65, 5, 40, list) == Status::bad_size);
+    REQUIRE(g_edges.begin_frame(10, 65, 40, list) == Status::bad_size);  // more rows than the list
+    REQUIRE(g_edges.push_row(words, 10) == Status::not_in_frame);
+    REQUIRE(g_edges.begin_frame(10, 2, 40, list) == Status::ok);
+    REQUIRE(g_edges.push_row(words, 9) == Status::bad_row_length);
+    REQUIRE(g_edges.push_row(words, 10) == Status::not_in_frame);
+    REQUIRE(g_edges.begin_frame(10, 2, 40, list) == Status::ok);
+    REQUIRE(g_edges.push_row(words, 10) == Status::ok);
+    REQUIRE(g_edges.push_row(words, 10) == Status::ok);
+    REQUIRE(g_edges.push_row(words, 10) == Status::not_in_frame);
+}
