@@ -9,10 +9,16 @@
 // +gradient) and not less than the one behind, so a plateau two pixels wide gives one edge.
 // Pixels outside the frame count as magnitude 0.
 //
+// Input: rows of gradient words (push_row: the FPGA path) or rows already packed for NMS by
+// NmsRowKernel straight from pixels (push_packed_row: the software path, which skips the
+// gradient word and computes a direction only where the magnitude reaches the threshold —
+// the only directions NMS reads — so both paths give the same edges).
+//
 // Memory: 4 rows of MaxWidth + 2 half-words (3 window rows and one zero row, one pad column
 // each side): 8·(MaxWidth + 2) bytes (2576 B at 320).
 #pragma once
 #include <stdint.h>
+#include <string.h>
 
 #include "edge_list.h"
 #include "gradient_word.h"
@@ -23,6 +29,21 @@ namespace qt {
 // One row of the NMS window: magnitude [8:0] and direction bin [12:9] of each pixel, with a
 // zero at index 0 and at width + 1 so that x - 1 and x + 1 never leave the row.
 void pack_nms_row(const gradient_word* words, uint16_t width, uint16_t* row);
+// The same packed row straight from three pixel rows (gradient_row's geometry), with the
+// direction left 0 where the magnitude is below edge_threshold.
+void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t* below,
+                      uint16_t width, uint16_t edge_threshold, uint16_t* row);
+
+// GradientStage kernel producing packed NMS rows (kPad = 1: the pad columns).
+struct NmsRowKernel {
+    using value_type = uint16_t;
+    static constexpr uint16_t kPad = 1;
+    uint16_t edge_threshold = 1;
+    void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
+                    uint16_t width, uint16_t* out) const {
+        gradient_nms_row(above, center, below, width, edge_threshold, out);
+    }
+};
 // Appends row y's edges (centre row `c`, rows above `a` and below `b`, all packed) to `out`.
 void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t width, uint16_t y,
              uint16_t edge_threshold, EdgeList& out);
@@ -50,13 +71,37 @@ public:
     // Gradient words of the next row, in order. The list is complete (end_frame called) after
     // the last row.
     Status push_row(const gradient_word* words, uint16_t width) {
+        const Status s = check_row(width);
+        if (s != Status::ok) return s;
+        pack_nms_row(words, width, rows_[next_row_ % 3]);
+        advance();
+        return Status::ok;
+    }
+
+    // A row packed by NmsRowKernel (width + 2 entries, pads included), in order.
+    Status push_packed_row(const uint16_t* packed, uint16_t width) {
+        const Status s = check_row(width);
+        if (s != Status::ok) return s;
+        memcpy(rows_[next_row_ % 3], packed, (width + 2u) * sizeof(uint16_t));
+        advance();
+        return Status::ok;
+    }
+
+    bool in_frame() const { return in_frame_; }
+
+private:
+    Status check_row(uint16_t width) {
         if (!in_frame_) return Status::not_in_frame;
         if (width != width_) {
             in_frame_ = false;
             return Status::bad_row_length;
         }
+        return Status::ok;
+    }
+
+    // Row next_row_ is in its slot: suppress the row before it (and the last row at the end).
+    void advance() {
         const uint16_t y = next_row_;
-        pack_nms_row(words, width, rows_[y % 3]);
         if (y >= 1) {
             const uint16_t* above = y >= 2 ? rows_[(y - 2) % 3] : zero_;
             nms_row(above, rows_[(y - 1) % 3], rows_[y % 3], width_, static_cast<uint16_t>(y - 1),
@@ -69,12 +114,8 @@ public:
             in_frame_ = false;
         }
         next_row_ = static_cast<uint16_t>(y + 1u);
-        return Status::ok;
     }
 
-    bool in_frame() const { return in_frame_; }
-
-private:
     uint16_t rows_[3][MaxWidth + 2] = {};
     uint16_t zero_[MaxWidth + 2] = {};
     EdgeList* out_ = nullptr;

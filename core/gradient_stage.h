@@ -1,10 +1,14 @@
-// The streaming gradient stage: camera rows in, gradient words out one row behind.
+// The streaming gradient stage: camera rows in, gradient rows out one row behind.
 //
 // Memory: two line buffers of MaxWidth bytes (rows y-1 and y; the incoming row is y+1) and
-// one output row of MaxWidth words: 6·MaxWidth bytes in all (3840 B at 640), no heap.
-// Borders are replicated (docs/gradient.md). Output row y is handed to the sink when row
-// y+1 arrives; the last row is handed over together with the second last when the final
-// row arrives, so a frame of H rows makes exactly H sink calls.
+// one output row: 6·MaxWidth bytes with gradient words (3840 B at 640), no heap. Borders are
+// replicated (docs/gradient.md). Output row y is handed to the sink when row y+1 arrives;
+// the last row is handed over together with the second last when the final row arrives, so
+// a frame of H rows makes exactly H sink calls.
+//
+// What a row becomes is the RowKernel's business: WordRowKernel (the default) makes gradient
+// words, the FPGA block's output; edge_stage.h's NmsRowKernel makes the edge stage's packed
+// rows directly, for the software path of the lines stage.
 #pragma once
 #include <stdint.h>
 #include <string.h>
@@ -18,11 +22,24 @@ namespace qt {
 void gradient_row(const uint8_t* above, const uint8_t* center, const uint8_t* below,
                   uint16_t width, gradient_word* out);
 
-template <uint16_t MaxWidth>
+// Rows of gradient words, out[0 .. width).
+struct WordRowKernel {
+    using value_type = gradient_word;
+    static constexpr uint16_t kPad = 0;  // extra entries before and after the row
+    void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
+                    uint16_t width, gradient_word* out) const {
+        gradient_row(above, center, below, width, out);
+    }
+};
+
+template <uint16_t MaxWidth, class RowKernel = WordRowKernel>
 class GradientStage {
     static_assert(MaxWidth >= 1, "at least one pixel per row");
+    using value_type = typename RowKernel::value_type;
 
 public:
+    RowKernel kernel;  // its parameters, if any, may change between frames
+
     static constexpr uint16_t kMaxWidth = MaxWidth;
 
     // Start a frame of width × height pixels. Returns bad_size (and no frame) when either is
@@ -57,14 +74,14 @@ public:
             // Row y-1 has all its neighbours now: above is row y-2 (in slot_y, about to be
             // overwritten) or row 0 replicated when y == 1.
             const uint8_t* above = y == 1 ? prev : slot_y;
-            gradient_row(above, prev, pixels, width_, out_);
-            sink(static_cast<uint16_t>(y - 1), static_cast<const gradient_word*>(out_), width_);
+            kernel(above, prev, pixels, width_, out_);
+            sink(static_cast<uint16_t>(y - 1), static_cast<const value_type*>(out_), width_);
         }
         memcpy(slot_y, pixels, width_);
         if (y + 1u == height_) {
             // Last row: its lower neighbour is itself (replicated border).
-            gradient_row(y == 0 ? slot_y : prev, slot_y, slot_y, width_, out_);
-            sink(y, static_cast<const gradient_word*>(out_), width_);
+            kernel(y == 0 ? slot_y : prev, slot_y, slot_y, width_, out_);
+            sink(y, static_cast<const value_type*>(out_), width_);
             in_frame_ = false;
         }
         next_row_ = static_cast<uint16_t>(y + 1u);
@@ -78,7 +95,7 @@ public:
 
 private:
     uint8_t rows_[2][MaxWidth] = {};
-    gradient_word out_[MaxWidth] = {};
+    value_type out_[MaxWidth + 2 * RowKernel::kPad] = {};
     uint16_t width_ = 0;
     uint16_t height_ = 0;
     uint16_t next_row_ = 0;

@@ -1,5 +1,7 @@
 #include "hough.h"
 
+#include <string.h>
+
 #include "isqrt.h"
 #include "line_fit.h"
 #include "visit_order.h"
@@ -37,7 +39,7 @@ public:
             ws.cos_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.cos.raw, 16));
             ws.sin_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.sin.raw, 16));
         }
-        for (uint32_t i = 0; i < n * n_rho_; ++i) ws.bins[i] = 0;
+        memset(ws.bins, 0, n * n_rho_);
     }
 
     void run(Segment* out, uint16_t capacity, uint16_t* count) {
@@ -49,26 +51,28 @@ public:
             if (ep::state(pt) != ep::kFresh) continue;
             edges_[i] = ep::with_state(pt, ep::kVoted);
             ++stats_.points_visited;
-            uint32_t best_t = 0;
-            const uint32_t best = vote(pt, +1, &best_t);
+            uint32_t best_bin = 0;
+            const uint32_t best = vote(pt, +1, &best_bin);
             if (best < p_.threshold) continue;
             ++stats_.lines_followed;
             Segment s;
-            if (follow(i, best_t, s)) {
-                if (*count < capacity) {
-                    out[(*count)++] = s;
-                    ++stats_.segments;
-                } else {
-                    ++stats_.segments_dropped;
-                }
+            if (!follow(i, best_bin / n_rho_, s)) {
+                // No segment along this bin's line here (a curve or scattered points voted
+                // for it): empty the bin, so that the next vote does not follow it again.
+                ws_.bins[best_bin] = 0;
+            } else if (*count < capacity) {
+                out[(*count)++] = s;
+                ++stats_.segments;
+            } else {
+                ++stats_.segments_dropped;
             }
         }
     }
 
 private:
     // Casts (+1) or withdraws (-1) the point's votes; returns the highest count among its bins
-    // and that bin's θ index.
-    uint32_t vote(edge_point pt, int delta, uint32_t* best_t) {
+    // and that bin's index (θ index · rho bins + rho index).
+    uint32_t vote(edge_point pt, int delta, uint32_t* best_bin) {
         const int32_t n = p_.theta_bins;
         const int32_t x = static_cast<int32_t>(ep::x(pt)) - cx_, y = static_cast<int32_t>(ep::y(pt)) - cy_;
         int32_t first = 0, last = n - 1;
@@ -78,24 +82,39 @@ private:
             first = centre - window_;
             last = centre + window_;
         }
+        // The window may wrap past 0° or 180°: at most two runs of consecutive θ indices.
         uint32_t best = 0;
-        for (int32_t j = first; j <= last; ++j) {
-            const int32_t t = j < 0 ? j + n : j >= n ? j - n : j;
-            const int32_t v = x * ws_.cos_q14[t] + y * ws_.sin_q14[t];  // rho, 1.0 = 2^14
-            const int32_t r = ((v + (1 << (13 + rho_shift_))) >> (14 + rho_shift_)) + rho_half_;
-            uint8_t& bin = ws_.bins[static_cast<uint32_t>(t) * n_rho_ + static_cast<uint32_t>(r)];
-            if (delta > 0) {
-                ++stats_.votes;
+        int32_t runs[2][2] = {{first, last}, {1, 0}};  // the second run empty unless it wraps
+        if (first < 0) {
+            runs[0][0] = first + n;
+            runs[0][1] = n - 1;
+            runs[1][0] = 0;
+            runs[1][1] = last;
+        } else if (last >= n) {
+            runs[0][1] = n - 1;
+            runs[1][0] = 0;
+            runs[1][1] = last - n;
+        }
+        const int32_t round = 1 << (13 + rho_shift_), shift = 14 + rho_shift_;
+        for (int32_t k = 0; k < 2; ++k) {
+            for (int32_t t = runs[k][0]; t <= runs[k][1]; ++t) {
+                const int32_t v = x * ws_.cos_q14[t] + y * ws_.sin_q14[t];  // rho, 1.0 = 2^14
+                const uint32_t index = static_cast<uint32_t>(t) * n_rho_ +
+                                       static_cast<uint32_t>(((v + round) >> shift) + rho_half_);
+                uint8_t& bin = ws_.bins[index];
+                if (delta < 0) {
+                    bin = static_cast<uint8_t>(bin - (bin > 0));
+                    continue;
+                }
                 if (bin == 255) ++stats_.saturated_votes;
-                else ++bin;
+                bin = static_cast<uint8_t>(bin + (bin < 255));
                 if (bin > best) {
                     best = bin;
-                    *best_t = static_cast<uint32_t>(t);
+                    *best_bin = index;
                 }
-            } else if (bin > 0) {
-                --bin;
             }
         }
+        if (delta > 0) stats_.votes += static_cast<uint32_t>(last - first + 1);
         return best;
     }
 
@@ -201,9 +220,17 @@ private:
                 end32[way][1] = ep::y32(hp);
                 if (!fresh) continue;
                 m.add(end32[way][0] - sx32, end32[way][1] - sy32);
-                if ((m.n & 7) == 0) refit(tr, m, sx32, sy32);
+                // Refit at 8, 16, 32, ... points: the direction settles quickly, and each fit
+                // costs two CORDIC runs.
+                if (m.n >= 8 && (m.n & (m.n - 1)) == 0) refit(tr, m, sx32, sy32);
             }
         }
+        // Too few points, or a run too short along its major axis (the line is at most √5 times
+        // longer, |slope| <= 2): rejected before the final fit.
+        const int32_t major_extent = (major_of(tr, end32[0][0], end32[0][1]) - major_of(tr, end32[1][0], end32[1][1])) / 32;
+        if (m.n < p_.threshold ||
+            (major_extent < 0 ? -major_extent : major_extent) * 9 < 4 * static_cast<int32_t>(p_.min_line_length))
+            return false;
         FittedLine line;
         fit_line(m, sx32, sy32, line);
         q16_16 t1 = along(line, q16_16::from_raw(int64_t{end32[1][0]} * 2048), q16_16::from_raw(int64_t{end32[1][1]} * 2048));

@@ -1,5 +1,6 @@
 // The lines stage of one frame, all memory inside, fixed at compile time: gradient (or words
-// from the FPGA) -> edges -> PPHT segments -> clustered lines.
+// from the FPGA) -> edges -> PPHT segments -> clustered lines. Camera rows go through the
+// gradient and NMS without forming gradient words (edge_stage.h: same edges, less work).
 //
 //   static qt::LineDetectorQvga det;           // ~44 KiB, see ram_bytes()
 //   det.begin_frame(320, 240, params);
@@ -54,6 +55,7 @@ public:
         finished_ = false;
         if (height > MaxHeight) return Status::bad_size;
         edges_view_ = edges_.view();
+        gradient_.kernel.edge_threshold = params.edge_threshold;
         Status s = gradient_.begin_frame(width, height);
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
         const Status e = edge_stage_.begin_frame(width, height, params.edge_threshold, edges_view_);
@@ -66,8 +68,8 @@ public:
     // A camera row (grey levels).
     Status push_row(const uint8_t* pixels, uint16_t length) {
         Status edge_status = Status::ok;
-        const Status s = gradient_.push_row(pixels, length, [&](uint16_t, const gradient_word* w, uint16_t n) {
-            const Status e = edge_stage_.push_row(w, n);
+        const Status s = gradient_.push_row(pixels, length, [&](uint16_t, const uint16_t* packed, uint16_t n) {
+            const Status e = edge_stage_.push_packed_row(packed, n);
             if (e != Status::ok) edge_status = e;
         });
         return s != Status::ok ? s : edge_status;
@@ -101,7 +103,7 @@ public:
     const EdgeList& edges() const { return edges_view_; }
 
     // RAM of the parts, bytes, for the README's table.
-    static constexpr uint32_t gradient_bytes() { return sizeof(GradientStage<MaxWidth>); }
+    static constexpr uint32_t gradient_bytes() { return sizeof(GradientStage<MaxWidth, NmsRowKernel>); }
     static constexpr uint32_t edge_stage_bytes() { return sizeof(EdgeStage<MaxWidth>); }
     static constexpr uint32_t edge_list_bytes() { return sizeof(EdgeListStorage<EdgeCapacity, MaxHeight>); }
     static constexpr uint32_t accumulator_bytes() { return sizeof(HoughStorage<HoughBins, MaxThetaBins>); }
@@ -110,7 +112,7 @@ public:
     }
 
 private:
-    GradientStage<MaxWidth> gradient_;
+    GradientStage<MaxWidth, NmsRowKernel> gradient_;  // pixels -> packed NMS rows, no words
     EdgeStage<MaxWidth> edge_stage_;
     EdgeListStorage<EdgeCapacity, MaxHeight> edges_;
     EdgeList edges_view_ = edges_.view();
