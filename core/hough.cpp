@@ -121,6 +121,7 @@ private:
     // The line being followed: minor = anchor_minor + (major - anchor_major)·slope, in 1/32 px.
     struct Track {
         bool major_is_y;
+        uint32_t normal_axis;  // the line normal as a direction bin modulo 8 (22.5° steps)
         int32_t anchor_major32, anchor_minor32;
         int32_t slope_q16;  // d minor / d major
     };
@@ -165,7 +166,7 @@ private:
             const int32_t off = (k & 1) ? -(k + 1) / 2 : k / 2;  // 0, -1, +1, -2, +2, ...
             const int32_t mn = minor + off;
             const int32_t i = tr.major_is_y ? edges_.find(mn, major) : edges_.find(major, mn);
-            if (i < 0) continue;
+            if (i < 0 || !across(tr, edges_[static_cast<uint16_t>(i)])) continue;
             if (ep::state(edges_[static_cast<uint16_t>(i)]) != ep::kConsumed) {
                 *fresh = true;
                 return i;
@@ -174,6 +175,14 @@ private:
         }
         *fresh = false;
         return consumed;
+    }
+
+    // Whether a point's gradient runs across the line (within 2 bins, ±45°, of its normal):
+    // beyond a sharp corner the other side's pixels lie within the corridor for a while, and
+    // without this test a line would run on along them.
+    static bool across(const Track& tr, edge_point p) {
+        const uint32_t d = (ep::dir(p) - tr.normal_axis) & 7u;
+        return d <= 2u || d >= 6u;
     }
 
     bool spend_step() {
@@ -194,6 +203,7 @@ private:
         // Normal (cos θ, sin θ); the line runs along (−sin θ, cos θ).
         const int32_t c = ws_.cos_q14[t], s = ws_.sin_q14[t];
         tr.major_is_y = (c < 0 ? -c : c) > (s < 0 ? -s : s);
+        tr.normal_axis = ((t * 16u / p_.theta_bins) + 1u) / 2u & 7u;  // round(θ / 22.5°) mod 8
         tr.anchor_major32 = major_of(tr, sx32, sy32);
         tr.anchor_minor32 = minor_of(tr, sx32, sy32);
         set_direction(tr, -s, c);
@@ -255,7 +265,7 @@ private:
             const int32_t pred = predict(tr, major);
             for (int32_t off = -static_cast<int32_t>(p_.corridor); off <= static_cast<int32_t>(p_.corridor); ++off) {
                 const int32_t i = tr.major_is_y ? edges_.find(pred + off, major) : edges_.find(major, pred + off);
-                if (i < 0) continue;
+                if (i < 0 || !across(tr, edges_[static_cast<uint16_t>(i)])) continue;
                 edge_point& e = edges_[static_cast<uint16_t>(i)];
                 if (ep::state(e) == ep::kVoted) {
                     uint32_t unused = 0;

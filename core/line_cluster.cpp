@@ -92,3 +92,67 @@ Status cluster_segments(const Segment* in, uint16_t n, const ClusterParams& para
 }
 
 }  // namespace qt
+
+namespace qt {
+
+namespace {
+
+// Intersection of the lines through segments a and b, in q16_16; false when (near) parallel.
+// Computed in 1/256 pixel so that the products stay within 64 bits (coordinates < 2^19,
+// cross products < 2^39, their products with a direction < 2^58).
+bool intersect(const Segment& a, const Segment& b, q16_16& x, q16_16& y) {
+    auto q8 = [](q16_16 v) { return shr_round_half_away(v.raw, 8); };
+    const int64_t ax = q8(a.x1), ay = q8(a.y1), dax = q8(a.x2) - ax, day = q8(a.y2) - ay;
+    const int64_t bx = q8(b.x1), by = q8(b.y1), dbx = q8(b.x2) - bx, dby = q8(b.y2) - by;
+    const int64_t denom = dax * dby - day * dbx;
+    if (denom == 0) return false;
+    const int64_t num = (bx - ax) * dby - (by - ay) * dbx;  // t = num / denom along a
+    x = q16_16::from_raw((ax + div_round_half_away(dax * num, denom)) * 256);
+    y = q16_16::from_raw((ay + div_round_half_away(day * num, denom)) * 256);
+    return true;
+}
+
+int64_t dist2(q16_16 x1, q16_16 y1, q16_16 x2, q16_16 y2) {
+    return sq(static_cast<int64_t>(x1.raw) - x2.raw) + sq(static_cast<int64_t>(y1.raw) - y2.raw);
+}
+
+}  // namespace
+
+uint16_t join_corners(Segment* lines, uint16_t n, const CornerParams& params,
+                      CornerCandidate* best) {
+    // best[2i] and best[2i + 1]: line i's first and second end. Ends move only after every
+    // pair is seen, so the order of the pairs does not matter.
+    const int64_t reach = sq(params.max_distance.raw);
+    for (uint32_t e = 0; e < 2u * n; ++e) best[e] = CornerCandidate{reach + 1, {}, {}};
+    for (uint16_t i = 0; i < n; ++i)
+        for (uint16_t j = static_cast<uint16_t>(i + 1); j < n; ++j) {
+            const angle_t d = orientation_difference(lines[i].theta, lines[j].theta);
+            if (d < params.min_angle) continue;
+            q16_16 x, y;
+            if (!intersect(lines[i], lines[j], x, y)) continue;
+            const int64_t di1 = dist2(x, y, lines[i].x1, lines[i].y1), di2 = dist2(x, y, lines[i].x2, lines[i].y2);
+            const int64_t dj1 = dist2(x, y, lines[j].x1, lines[j].y1), dj2 = dist2(x, y, lines[j].x2, lines[j].y2);
+            const uint16_t ei = static_cast<uint16_t>(2 * i + (di2 < di1 ? 1 : 0));
+            const uint16_t ej = static_cast<uint16_t>(2 * j + (dj2 < dj1 ? 1 : 0));
+            const int64_t di = di2 < di1 ? di2 : di1, dj = dj2 < dj1 ? dj2 : dj1;
+            if (di > reach || dj > reach) continue;  // a corner of both lines, or of neither
+            if (di < best[ei].distance2) best[ei] = CornerCandidate{di, x, y};
+            if (dj < best[ej].distance2) best[ej] = CornerCandidate{dj, x, y};
+        }
+    uint16_t moved = 0;
+    for (uint32_t e = 0; e < 2u * n; ++e) {
+        if (best[e].distance2 > reach) continue;
+        Segment& l = lines[e / 2];
+        if (e % 2 == 0) {
+            l.x1 = best[e].x;
+            l.y1 = best[e].y;
+        } else {
+            l.x2 = best[e].x;
+            l.y2 = best[e].y;
+        }
+        ++moved;
+    }
+    return moved;
+}
+
+}  // namespace qt

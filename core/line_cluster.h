@@ -21,9 +21,19 @@ struct ClusterParams {
     q16_16 gap = q16_16::from_int(24);      // largest gap between merged segments along the line, px
 };
 
+// Corners: where two lines' ends meet at a clear angle, both ends move to the lines'
+// intersection. Edge pixels give out within a pixel or two of a corner (the two sides'
+// gradients mix there), so ends found by PPHT stop short of it; the intersection is where the
+// sides really meet.
+struct CornerParams {
+    q16_16 max_distance = q16_16::from_int(3);  // an end moves at most this far, pixels
+    angle_t min_angle = angle_from_deg(20);     // lines closer to parallel are left alone
+};
+
 struct ClusterStats {
     uint16_t clusters = 0;
     uint16_t clusters_dropped = 0;  // clusters found with the output full
+    uint16_t ends_joined = 0;       // line ends moved to a corner
 };
 
 // Orientation difference of two line normals modulo 180°, in [0°, 90°].
@@ -35,5 +45,17 @@ angle_t orientation_difference(angle_t a, angle_t b);
 Status cluster_segments(const Segment* in, uint16_t n, const ClusterParams& params,
                         uint8_t* scratch, Segment* out, uint16_t capacity, uint16_t* count,
                         ClusterStats* stats);
+
+// The nearest corner found so far for one line end.
+struct CornerCandidate {
+    int64_t distance2;  // squared distance from the end, q16_16 units squared
+    q16_16 x, y;        // the corner, pixels
+};
+
+// Moves line ends to corners (CornerParams); O(n²). Each end takes the nearest corner within
+// reach; the decisions are made on the ends as found, then applied. rho, theta and C do not
+// change (the ends stay on their lines). `scratch` holds 2·n candidates. Returns the ends moved.
+uint16_t join_corners(Segment* lines, uint16_t n, const CornerParams& params,
+                      CornerCandidate* scratch);
 
 }  // namespace qt

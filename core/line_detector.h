@@ -1,5 +1,5 @@
 // The lines stage of one frame, all memory inside, fixed at compile time: gradient (or words
-// from the FPGA) -> edges -> PPHT segments -> clustered lines. Camera rows go through the
+// from the FPGA) -> edges -> PPHT segments -> clustered lines, ends joined at corners. Camera rows go through the
 // gradient and NMS without forming gradient words (edge_stage.h: same edges, less work).
 //
 //   static qt::LineDetectorQvga det;           // ~44 KiB, see ram_bytes()
@@ -21,6 +21,7 @@ struct LineParams {
     uint16_t edge_threshold = 40;  // L1 gradient magnitude for an edge, grey levels (1..510)
     HoughParams hough;
     ClusterParams cluster;
+    CornerParams corners;
 };
 
 struct LineStats {
@@ -91,8 +92,10 @@ public:
         if (h != Status::ok) return h;
         const Status c = cluster_segments(segments_, segment_count_, params_.cluster, scratch_,
                                           lines_, MaxLines, &line_count_, &stats_.cluster);
-        finished_ = c == Status::ok;
-        return c;
+        if (c != Status::ok) return c;
+        stats_.cluster.ends_joined = join_corners(lines_, line_count_, params_.corners, corners_);
+        finished_ = true;
+        return Status::ok;
     }
 
     const Segment* segments() const { return segments_; }
@@ -108,7 +111,7 @@ public:
     static constexpr uint32_t edge_list_bytes() { return sizeof(EdgeListStorage<EdgeCapacity, MaxHeight>); }
     static constexpr uint32_t accumulator_bytes() { return sizeof(HoughStorage<HoughBins, MaxThetaBins>); }
     static constexpr uint32_t line_list_bytes() {
-        return sizeof(Segment) * (MaxSegments + MaxLines) + MaxSegments;
+        return sizeof(Segment) * (MaxSegments + MaxLines) + MaxSegments + sizeof(CornerCandidate) * 2 * MaxLines;
     }
 
 private:
@@ -120,6 +123,7 @@ private:
     Segment segments_[MaxSegments] = {};
     Segment lines_[MaxLines] = {};
     uint8_t scratch_[MaxSegments] = {};
+    CornerCandidate corners_[2 * MaxLines] = {};
     LineParams params_;
     LineStats stats_;
     uint16_t width_ = 0, height_ = 0, segment_count_ = 0, line_count_ = 0;

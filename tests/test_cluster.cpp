@@ -137,3 +137,24 @@ TEST_CASE("cluster output capacity is reported", "[cluster]") {
     REQUIRE(d - angle_from_deg(2) + 1u <= 2u);
     REQUIRE(orientation_difference(angle_from_deg(10), angle_from_deg(190)) == 0u);
 }
+
+TEST_CASE("line ends near a corner move to the intersection; others stay", "[cluster]") {
+    // The sides y = 50 (x from 12 to 100) and x = 10 (y from 52 to 120) of a corner at (10, 50):
+    // both ends 2 px short of it. A third line, parallel to the first, stays as it is.
+    Segment lines[3] = {seg(12, 50, 100, 50, 80), seg(10, 52, 10, 120, 60), seg(12, 60, 100, 60, 80)};
+    CornerCandidate scratch[6];
+    const uint16_t moved = join_corners(lines, 3, CornerParams{}, scratch);
+    // The third line's end at (12, 60) is 2 px from the second line, but the second line's
+    // end (10, 52) is 8 px from their crossing (10, 60): not a corner of both.
+    REQUIRE(moved == 2);
+    REQUIRE(px(lines[0].x1) == Approx(10).margin(0.01));
+    REQUIRE(px(lines[0].y1) == Approx(50).margin(0.01));
+    REQUIRE(px(lines[1].x1) == Approx(10).margin(0.01));
+    REQUIRE(px(lines[1].y1) == Approx(50).margin(0.01));
+    REQUIRE(px(lines[2].x1) == Approx(12).margin(0.01));
+    REQUIRE(px(lines[0].x2) == Approx(100).margin(0.01));  // far ends untouched
+    REQUIRE(px(lines[1].y2) == Approx(120).margin(0.01));
+    // Ends 5 px short are beyond the default reach of 3 px.
+    Segment far[2] = {seg(15, 50, 100, 50, 80), seg(10, 55, 10, 120, 60)};
+    REQUIRE(join_corners(far, 2, CornerParams{}, scratch) == 0);
+}

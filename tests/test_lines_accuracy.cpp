@@ -55,7 +55,8 @@ TEST_CASE("polygon edges at noise 5: recall and false positives", "[accuracy]") 
     for (int i = 0; i < kScenes; ++i) t.add(score(scene::random_polygon_scene(noisy(1000 + i), 2, 40, 60)));
     INFO("found " << t.found << " of " << t.scored << ", false positives " << t.false_positives);
     REQUIRE(t.scored >= 350);
-    REQUIRE(t.found >= t.scored * 98 / 100);
+    // 400 of 400 on these seeds; the README's 800-segment table shows 99.2 % on others.
+    REQUIRE(t.found >= t.scored * 99 / 100);
     REQUIRE(t.false_positives <= kScenes / 10);
 }
 
@@ -77,8 +78,8 @@ TEST_CASE("a noiseless axis-aligned rectangle is found to a fifth of a pixel", "
     REQUIRE(r.found == 4);
     REQUIRE(r.false_positives == 0);
     REQUIRE(r.worst_angle_deg < 0.1);
-    // Ends stop within a pixel of the corners, where two sides share their pixels.
-    REQUIRE(r.worst_endpoint_px < 1.0);
+    // Ends joined at the corners: within a fifth of a pixel of them.
+    REQUIRE(r.worst_endpoint_px < 0.2);
     for (uint16_t i = 0; i < g_det.line_count(); ++i) {
         const double rho = g_det.lines()[i].rho.raw / 65536.0;
         const bool on_side = std::fabs(rho - 70.2) < 0.2 || std::fabs(rho - 170.2) < 0.2 ||

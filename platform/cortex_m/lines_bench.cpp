@@ -9,10 +9,10 @@
 //
 // Timing, in SysTick ticks, 40 instructions each under -icount shift=0 (cycle_counter.h):
 //   gradient_edges  all push_row calls of the frame, one reading around the row loop
-//   hough_cluster   finish(): PPHT and clustering
-//   cluster         cluster_segments() run again, outside the detector, on the detector's own
-//                   segments and parameters (same input, same code, so the same work; its
-//                   output must equal det.lines()); hough = hough_cluster - cluster.
+//   hough_cluster   finish(): PPHT, clustering and joining line ends at corners
+//   cluster         cluster_segments() + join_corners() run again, outside the detector, on
+//                   the detector's own segments and parameters (same input, same code, so the
+//                   same work; its output must equal det.lines()); hough = hough_cluster - cluster.
 // finish() cannot be split from outside without changing core/ (the accumulator is private
 // and PPHT consumes the edge list), hence the re-run. Each reading is quantised to 40
 // instructions and includes one ticks_now() pair (a few tens of instructions).
@@ -247,6 +247,7 @@ const qt::LineParams kParams{};
 // Output of the clustering re-run (timing only; must equal g_det.lines()).
 qt::Segment g_cluster_lines[kMaxLines];
 uint8_t g_cluster_scratch[64];  // LineDetectorQvga's MaxSegments
+qt::CornerCandidate g_corner_scratch[2 * kMaxLines];
 
 struct Result {
     const char* error = nullptr;  // why the frame could not be run, or nullptr
@@ -292,6 +293,7 @@ Result run_scene(const Scene& scene, bool& frame_open) {
     const uint64_t t3 = ticks_now();
     s = qt::cluster_segments(g_det.segments(), g_det.segment_count(), kParams.cluster,
                              g_cluster_scratch, g_cluster_lines, kMaxLines, &count, &cluster_stats);
+    if (s == qt::Status::ok) qt::join_corners(g_cluster_lines, count, kParams.corners, g_corner_scratch);
     const uint64_t t4 = ticks_now();
     if (s != qt::Status::ok) return failed(r, qt::status_name(s));
     if (count != g_det.line_count()) return failed(r, "clustering re-run: different line count");
@@ -402,7 +404,7 @@ int main() {
     print_bytes("other", Det::ram_bytes() - Det::gradient_bytes() - Det::edge_stage_bytes() -
                              Det::edge_list_bytes() - Det::accumulator_bytes() - Det::line_list_bytes());
     sh_write("\nram bench_only");
-    print_bytes("cluster_rerun", sizeof g_cluster_lines + sizeof g_cluster_scratch);
+    print_bytes("cluster_rerun", sizeof g_cluster_lines + sizeof g_cluster_scratch + sizeof g_corner_scratch);
     sh_write("\nlines: ");
     if (passed == kCount && parser_failures == 0) {
         sh_write("all ");
