@@ -18,7 +18,7 @@ namespace qt {
 struct ClusterParams {
     q16_16 distance = q16_16::from_int(6);  // |Ci − Cj| threshold, pixels
     angle_t max_angle = angle_from_deg(4);  // orientation difference (mod 180°) threshold
-    q16_16 gap = q16_16::from_int(24);      // largest gap between merged segments along the line, px
+    q16_16 gap = q16_16::from_int(16);      // largest gap between merged segments along the line, px
 };
 
 // Corners: where two lines' ends meet at a clear angle, both ends move to the lines'
