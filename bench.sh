@@ -20,6 +20,17 @@ host_build() {
     cmake --build --preset host -j"$jobs" --target "$@" >/dev/null
 }
 
+# Builds the cortex-m4 preset and runs one firmware image under QEMU with -icount shift=0
+# (one SysTick tick per 40 instructions, deterministic).
+run_m4() {
+    ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+    cmake --preset cortex-m4 >/dev/null
+    cmake --build --preset cortex-m4 -j"$jobs" >/dev/null
+    qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic \
+        -semihosting-config enable=on,target=native -icount shift=0 \
+        -kernel "build/cortex-m4/platform/cortex_m/$1.elf"
+}
+
 for name in "${names[@]}"; do
     echo "=== $name"
     case "$name" in
@@ -30,19 +41,9 @@ for name in "${names[@]}"; do
             host_build bench_lines
             ./build/host/platform/bench_lines ;;
         gradient-m4)
-            ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
-            cmake --preset cortex-m4 >/dev/null
-            cmake --build --preset cortex-m4 -j"$jobs" >/dev/null
-            qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic \
-                -semihosting-config enable=on,target=native -icount shift=0 \
-                -kernel build/cortex-m4/platform/cortex_m/gradient_bench.elf ;;
+            run_m4 gradient_bench ;;
         lines-m4)
-            ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
-            cmake --preset cortex-m4 >/dev/null
-            cmake --build --preset cortex-m4 -j"$jobs" >/dev/null
-            qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic \
-                -semihosting-config enable=on,target=native -icount shift=0 \
-                -kernel build/cortex-m4/platform/cortex_m/lines_bench.elf ;;
+            run_m4 lines_bench ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;

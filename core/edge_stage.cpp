@@ -7,7 +7,7 @@ namespace qt {
 void pack_nms_row(const gradient_word* words, uint16_t width, uint16_t* row) {
     row[0] = 0;
     for (uint16_t x = 0; x < width; ++x)
-        row[x + 1] = static_cast<uint16_t>(gradient_mag(words[x]) | (gradient_dir(words[x]) << 9));
+        row[x + 1] = nms_entry(gradient_mag(words[x]), gradient_dir(words[x]));
     row[width + 1] = 0;
 }
 
@@ -19,7 +19,7 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
     // branch halves the Cortex-M4's instructions per pixel (host time is the same either way).
     auto pack = [edge_threshold](int32_t gx, int32_t gy) {
         const uint32_t mag = static_cast<uint32_t>((gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy));
-        return static_cast<uint16_t>(mag >= edge_threshold ? mag | (direction_bin(gx, gy) << 9) : mag);
+        return mag >= edge_threshold ? nms_entry(mag, direction_bin(gx, gy)) : static_cast<uint16_t>(mag);
     };
     const int32_t last = width - 1;
     if (width == 1) {

@@ -2,7 +2,6 @@
 
 #include <string.h>
 
-#include "isqrt.h"
 #include "line_fit.h"
 #include "visit_order.h"
 
@@ -14,20 +13,13 @@ int rho_shift_of(uint16_t rho_step) {
     return rho_step == 1 ? 0 : rho_step == 2 ? 1 : rho_step == 4 ? 2 : -1;
 }
 
-// Bins of rho on each side of the centre: ceil(R / rho_step), R = ceil(distance to a corner).
-int32_t rho_half_bins(uint16_t width, uint16_t height, uint16_t rho_step) {
-    const uint32_t hx = (width + 1u) / 2u, hy = (height + 1u) / 2u;
-    const uint32_t r = isqrt32(hx * hx + hy * hy) + 1u;
-    return static_cast<int32_t>((r + rho_step - 1u) / rho_step);
-}
-
 class Ppht {
 public:
     Ppht(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& p,
          const HoughWorkspace& ws, HoughStats& stats)
         : edges_(edges), p_(p), ws_(ws), stats_(stats), width_(width), height_(height),
           cx_(width / 2), cy_(height / 2), rho_shift_(rho_shift_of(p.rho_step)),
-          rho_half_(rho_half_bins(width, height, p.rho_step)),
+          rho_half_(static_cast<int32_t>(hough_rho_half_bins(width, height, p.rho_step))),
           n_rho_(static_cast<uint32_t>(2 * rho_half_ + 1)) {
         const uint32_t n = p.theta_bins;
         window_ = p.vote_window_deg >= 90 ? -1
@@ -156,6 +148,10 @@ private:
         return static_cast<int32_t>((minor32 + 16) >> 5);
     }
 
+    int32_t find_at(const Track& tr, int32_t major, int32_t minor) const {
+        return tr.major_is_y ? edges_.find(minor, major) : edges_.find(major, minor);
+    }
+
     // The nearest edge point to (major, minor) within the corridor, or -1; an unconsumed one
     // when there is one. *fresh says which: points consumed by an earlier segment still mark
     // where the edge runs (at a corner two lines share pixels), so they extend a segment but
@@ -164,8 +160,7 @@ private:
         int32_t consumed = -1;
         for (int32_t k = 0; k <= 2 * static_cast<int32_t>(p_.corridor); ++k) {
             const int32_t off = (k & 1) ? -(k + 1) / 2 : k / 2;  // 0, -1, +1, -2, +2, ...
-            const int32_t mn = minor + off;
-            const int32_t i = tr.major_is_y ? edges_.find(mn, major) : edges_.find(major, mn);
+            const int32_t i = find_at(tr, major, minor + off);
             if (i < 0 || !across(tr, edges_[static_cast<uint16_t>(i)])) continue;
             if (ep::state(edges_[static_cast<uint16_t>(i)]) != ep::kConsumed) {
                 *fresh = true;
@@ -264,7 +259,7 @@ private:
             if (!spend_step()) break;
             const int32_t pred = predict(tr, major);
             for (int32_t off = -static_cast<int32_t>(p_.corridor); off <= static_cast<int32_t>(p_.corridor); ++off) {
-                const int32_t i = tr.major_is_y ? edges_.find(pred + off, major) : edges_.find(major, pred + off);
+                const int32_t i = find_at(tr, major, pred + off);
                 if (i < 0 || !across(tr, edges_[static_cast<uint16_t>(i)])) continue;
                 edge_point& e = edges_[static_cast<uint16_t>(i)];
                 if (ep::state(e) == ep::kVoted) {
@@ -291,12 +286,6 @@ private:
 
 }  // namespace
 
-uint32_t hough_bins_needed(uint16_t width, uint16_t height, const HoughParams& params) {
-    if (rho_shift_of(params.rho_step) < 0) return 0;
-    return static_cast<uint32_t>(params.theta_bins) *
-           static_cast<uint32_t>(2 * rho_half_bins(width, height, params.rho_step) + 1);
-}
-
 Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& params,
                       const HoughWorkspace& ws, Segment* out, uint16_t out_capacity,
                       uint16_t* count, HoughStats* stats) {
@@ -305,7 +294,7 @@ Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const Ho
     if (width == 0 || height == 0 || width > ep::kMaxCoordinate + 1 || height > ep::kMaxCoordinate + 1 ||
         edges.height() != height || rho_shift_of(params.rho_step) < 0 || params.theta_bins < 2 ||
         params.theta_bins > ws.theta_capacity || params.threshold == 0 || params.threshold > 255 ||
-        hough_bins_needed(width, height, params) > ws.bin_capacity)
+        hough_bins_for(width, height, params.theta_bins, params.rho_step) > ws.bin_capacity)
         return Status::bad_size;
     Ppht ppht(edges, width, height, params, ws, *stats);
     ppht.run(out, out_capacity, count);

@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "edge_list.h"
+#include "isqrt.h"
 #include "segment.h"
 #include "status.h"
 
@@ -51,9 +52,18 @@ struct HoughWorkspace {
     uint16_t theta_capacity;
 };
 
-// Accumulator bins needed for a frame: theta_bins × (2·ceil(R / rho_step) + 1), R the
-// distance from the frame centre to a corner, rounded up.
-uint32_t hough_bins_needed(uint16_t width, uint16_t height, const HoughParams& params);
+// Rho bins on each side of the frame centre: ceil(R / rho_step), R = floor(distance from the
+// centre to a corner) + 1 pixels.
+constexpr uint32_t hough_rho_half_bins(uint32_t width, uint32_t height, uint32_t rho_step) {
+    const uint32_t hx = (width + 1) / 2, hy = (height + 1) / 2;
+    return (isqrt32(hx * hx + hy * hy) + 1u + rho_step - 1u) / rho_step;
+}
+
+// Accumulator bins a frame needs: theta_bins × (2 · half + 1). Compile-time capacities
+// (line_detector.h) and the run-time check use this one formula.
+constexpr uint32_t hough_bins_for(uint32_t width, uint32_t height, uint32_t theta_bins, uint32_t rho_step) {
+    return theta_bins * (2 * hough_rho_half_bins(width, height, rho_step) + 1);
+}
 
 // Runs PPHT over `edges` of a width × height frame. Segments go to out[0 .. *count). Returns
 // bad_size for a bad frame or parameters that need more bins than the workspace holds

@@ -1,17 +1,45 @@
 // Integer square roots, bit by bit: shifts, adds and compares only, no division, no float.
+// constexpr, so compile-time capacities (hough.h) and run-time code share one definition.
 #pragma once
 #include <stdint.h>
 
 namespace qt {
 
+namespace detail {
+// Digit-by-digit square root in base 4: `bit` walks down the even powers of two.
+template <typename U>
+constexpr U isqrt_bits(U n, U bit) {
+    U root = 0;
+    while (bit > n) bit >>= 2;
+    while (bit != 0) {
+        if (n >= root + bit) {
+            n -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return root;
+}
+}  // namespace detail
+
 // floor(sqrt(n)) for every 32-bit n: the result r satisfies r*r <= n < (r+1)*(r+1).
-uint16_t isqrt32(uint32_t n);
+constexpr uint16_t isqrt32(uint32_t n) {
+    return static_cast<uint16_t>(detail::isqrt_bits<uint32_t>(n, uint32_t{1} << 30));
+}
 
 // floor(sqrt(n)) for every 64-bit n.
-uint32_t isqrt64(uint64_t n);
+constexpr uint32_t isqrt64(uint64_t n) {
+    return static_cast<uint32_t>(detail::isqrt_bits<uint64_t>(n, uint64_t{1} << 62));
+}
 
 // sqrt(n) rounded to nearest: floor(sqrt(n)) + 1 when n > r*r + r (the midpoint
-// (r + 1/2)^2 = r^2 + r + 1/4 lies between integers, so there are no ties).
-uint32_t isqrt64_round(uint64_t n);
+// (r + 1/2)^2 = r^2 + r + 1/4 lies between integers, so there are no ties). r + 1 can reach
+// 2^32 only for n > 2^64 - 2^32; it saturates there.
+constexpr uint32_t isqrt64_round(uint64_t n) {
+    const uint64_t r = isqrt64(n);
+    return static_cast<uint32_t>(n > r * r + r && r < 0xFFFFFFFFu ? r + 1 : r);
+}
 
 }  // namespace qt

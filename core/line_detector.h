@@ -31,15 +31,6 @@ struct LineStats {
     ClusterStats cluster;
 };
 
-// Largest distance from the centre of a w × h frame to a corner, whole pixels, rounded up +1:
-// the rho range of the accumulator (compile-time twin of hough.cpp's rho_half_bins).
-constexpr uint32_t hough_bins_for(uint32_t w, uint32_t h, uint32_t theta_bins, uint32_t rho_step) {
-    const uint32_t hx = (w + 1) / 2, hy = (h + 1) / 2, r2 = hx * hx + hy * hy;
-    uint32_t r = 0;
-    while ((r + 1) * (r + 1) <= r2) ++r;
-    return theta_bins * (2 * ((r + 1 + rho_step - 1) / rho_step) + 1);
-}
-
 template <uint16_t MaxWidth, uint16_t MaxHeight, uint16_t EdgeCapacity, uint32_t HoughBins,
           uint16_t MaxThetaBins, uint16_t MaxSegments, uint16_t MaxLines>
 class LineDetector {
@@ -53,7 +44,6 @@ public:
         params_ = params;
         stats_ = LineStats{};
         segment_count_ = line_count_ = 0;
-        finished_ = false;
         if (height > MaxHeight) return Status::bad_size;
         edges_view_ = edges_.view();
         gradient_.kernel.edge_threshold = params.edge_threshold;
@@ -94,7 +84,6 @@ public:
                                           lines_, MaxLines, &line_count_, &stats_.cluster);
         if (c != Status::ok) return c;
         stats_.cluster.ends_joined = join_corners(lines_, line_count_, params_.corners, corners_);
-        finished_ = true;
         return Status::ok;
     }
 
@@ -127,7 +116,6 @@ private:
     LineParams params_;
     LineStats stats_;
     uint16_t width_ = 0, height_ = 0, segment_count_ = 0, line_count_ = 0;
-    bool finished_ = false;
 };
 
 // QVGA: 320 × 240, 4096 edge points, 2° × 2 px accumulator, 64 segments, 32 lines.
