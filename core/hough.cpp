@@ -172,6 +172,19 @@ private:
         return consumed;
     }
 
+    // Polarity from the points' gradient directions (which point from dark to bright): +1 when
+    // more of them lie within ±67.5° of the normal θ than of its opposite, else −1.
+    static int8_t bright_side(angle_t theta, const uint16_t (&dir_count)[16]) {
+        const uint32_t normal_bin = ((theta >> 27) + 1u) / 2u & 15u;  // round(θ / 22.5°) mod 16
+        uint32_t along = 0, against = 0;
+        for (uint32_t k = 0; k < 16; ++k) {
+            const uint32_t d = (k - normal_bin) & 15u;
+            if (d <= 3u || d >= 13u) along += dir_count[k];
+            if (d >= 5u && d <= 11u) against += dir_count[k];
+        }
+        return along >= against ? int8_t{1} : int8_t{-1};
+    }
+
     // Whether a point's gradient runs across the line (within 2 bins, ±45°, of its normal):
     // beyond a sharp corner the other side's pixels lie within the corridor for a while, and
     // without this test a line would run on along them.
@@ -205,6 +218,8 @@ private:
 
         Moments m;
         m.add(0, 0);
+        uint16_t dir_count[16] = {};  // fitted points per gradient direction bin (polarity)
+        ++dir_count[ep::dir(sp)];
         int32_t end32[2][2] = {{sx32, sy32}, {sx32, sy32}};  // last hit each way: x32, y32
         const int32_t extent = tr.major_is_y ? height_ : width_;
         const int32_t seed_major = major_of(tr, static_cast<int32_t>(ep::x(sp)), static_cast<int32_t>(ep::y(sp)));
@@ -225,6 +240,7 @@ private:
                 end32[way][1] = ep::y32(hp);
                 if (!fresh) continue;
                 m.add(end32[way][0] - sx32, end32[way][1] - sy32);
+                if (dir_count[ep::dir(hp)] < 0xFFFFu) ++dir_count[ep::dir(hp)];
                 // Refit at 8, 16, 32, ... points: the direction settles quickly, and each fit
                 // costs two CORDIC runs.
                 if (m.n >= 8 && (m.n & (m.n - 1)) == 0) refit(tr, m, sx32, sy32);
@@ -270,6 +286,7 @@ private:
             }
         }
         out = make_segment(line, t1, t2, static_cast<uint16_t>(m.n > 65535 ? 65535 : m.n));
+        out.bright_side = bright_side(out.theta, dir_count);
         return true;
     }
 

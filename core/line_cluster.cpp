@@ -82,7 +82,13 @@ Status cluster_segments(const Segment* in, uint16_t n, const ClusterParams& para
             hi = t2 > hi ? t2 : hi;
         }
         if (*count < capacity) {
-            out[(*count)++] = make_segment(line, lo, hi, static_cast<uint16_t>(points > 65535 ? 65535 : points));
+            Segment& merged = out[(*count)++];
+            merged = make_segment(line, lo, hi, static_cast<uint16_t>(points > 65535 ? 65535 : points));
+            // The seed's polarity, turned with the normal when the refit flipped it (the
+            // orientations agree within max_angle, so the normals are ~0° or ~180° apart).
+            const angle_t turn = merged.theta - in[seed].theta;
+            const bool flipped = turn > kAngleQuarterTurn && turn < 3u * kAngleQuarterTurn;
+            merged.bright_side = static_cast<int8_t>(flipped ? -in[seed].bright_side : in[seed].bright_side);
             ++stats->clusters;
         } else {
             ++stats->clusters_dropped;

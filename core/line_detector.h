@@ -71,7 +71,9 @@ public:
         return edge_stage_.push_row(words, width);
     }
 
-    // After the last row: PPHT and clustering. not_in_frame if rows are missing.
+    // After the last row: PPHT and clustering. not_in_frame if rows are missing;
+    // capacity_exceeded when edges, segments or clusters were dropped or PPHT ran out of its
+    // walk budget (the lines found are valid; stats() says what was cut).
     Status finish() {
         if (edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
             return Status::not_in_frame;
@@ -84,7 +86,9 @@ public:
                                           lines_, MaxLines, &line_count_, &stats_.cluster);
         if (c != Status::ok) return c;
         stats_.cluster.ends_joined = join_corners(lines_, line_count_, params_.corners, corners_);
-        return Status::ok;
+        const bool cut_short = stats_.edges_dropped > 0 || stats_.hough.segments_dropped > 0 ||
+                               stats_.hough.budget_exhausted || stats_.cluster.clusters_dropped > 0;
+        return cut_short ? Status::capacity_exceeded : Status::ok;
     }
 
     const Segment* segments() const { return segments_; }
@@ -93,6 +97,8 @@ public:
     uint16_t line_count() const { return line_count_; }
     const LineStats& stats() const { return stats_; }
     const EdgeList& edges() const { return edges_view_; }
+    uint16_t width() const { return width_; }    // of the frame begun last, pixels
+    uint16_t height() const { return height_; }
 
     // RAM of the parts, bytes, for the README's table.
     static constexpr uint32_t gradient_bytes() { return sizeof(GradientStage<MaxWidth, NmsRowKernel>); }

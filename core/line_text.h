@@ -5,6 +5,7 @@
 //   theta             binary angle (value · 360 / 2^32 degrees)
 //   cx cy             q16_16 pixels
 //   points            edge points
+//   bright_side       +1 / -1 / 0, the contrast polarity (segment.h)
 // and a newline. A frame's lines follow its header line
 //   frame NAME edges E segments S lines L
 // No printf: the firmware has none.

@@ -15,6 +15,8 @@ struct Segment {
                             // (binary angle; y down, so positive angles turn clockwise on screen)
     q16_16 cx, cy;          // closest point of the line to the origin, C = rho·(cos θ, sin θ)
     uint16_t points;        // edge points the segment was fitted to
+    int8_t bright_side;     // contrast polarity: +1 when the brighter side lies in the +normal
+                            // direction (away from the origin), -1 towards it, 0 unknown
 };
 
 }  // namespace qt

@@ -9,6 +9,7 @@ const char* status_name(Status s) {
         case Status::bad_row_length: return "row length differs from frame width";
         case Status::not_in_frame: return "no frame in progress";
         case Status::previous_frame_incomplete: return "previous frame ended early";
+        case Status::capacity_exceeded: return "capacity exceeded (results incomplete)";
     }
     return "unknown status";
 }

@@ -12,6 +12,8 @@ enum class Status : uint8_t {
     not_in_frame,               // push_row() without begin_frame(), or after the last row
     previous_frame_incomplete,  // begin_frame() abandoned a frame whose rows had not all arrived;
                                 // the new frame has started normally
+    capacity_exceeded,          // a compile-time capacity filled: results are valid but
+                                // incomplete; the stage's stats count what was dropped
 };
 
 // Short English name for logs and CLI messages.

@@ -4,7 +4,10 @@
 #include <cstring>
 #include <string>
 
+#include <vector>
+
 #include "demo.h"
+#include "detect_command.h"
 
 namespace {
 
@@ -12,6 +15,9 @@ const char* kUsage =
     "usage: quadtrack COMMAND [OPTIONS]\n"
     "\n"
     "commands:\n"
+    "  detect IMAGE [OPTIONS]\n"
+    "                     find the board's lines and quadrangles in one PGM/PPM/Y4M frame and\n"
+    "                     print them as JSON; options: quadtrack detect --help\n"
     "  demo [--out DIR]   run the pipeline on the built-in synthetic board scene and write\n"
     "                     pictures under DIR (default: demo_out): input.png,\n"
     "                     gradient_magnitude.png (L1 |g| in grey levels, clipped at 255) and\n"
@@ -30,6 +36,7 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, stdout);
         return 0;
     }
+    if (command == "detect") return qt::cli::run_detect(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
     if (command == "demo") {
         std::string out = "demo_out";
         for (int i = 2; i < argc; ++i) {

@@ -5,59 +5,18 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "det_math.h"
 #include "prng.h"
 
 namespace qt::scene {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kLn2 = 0.69314718055994530942;
 constexpr double kMargin = 4;  // px between generated geometry and the outermost pixel centres
 
 // One PCG stream per purpose, so e.g. the clutter count does not change the noise field.
 constexpr uint64_t kStreamTexture = 0x7e47u, kStreamClutter = 0xc1a77u, kStreamNoise = 0x9015eu,
                    kStreamPolygons = 0x9017u, kStreamLines = 0x11e5u;
-
-// Elementary functions from IEEE basic operations only: libm's exp/log/sin/cos may differ in
-// the last ulp between libraries, which could flip a rounded grey level.
-double det_exp(double x) {  // accurate to ~1e-15 relative for |x| < 700
-    const double n = std::floor(x / kLn2 + 0.5);
-    const double r = x - n * kLn2;  // |r| <= 0.35
-    double sum = 1, term = 1;
-    for (int k = 1; k <= 20; ++k) {
-        term *= r / k;
-        sum += term;
-    }
-    return std::ldexp(sum, static_cast<int>(n));
-}
-
-double det_log(double x) {  // x > 0
-    int e = 0;
-    double m = std::frexp(x, &e);  // x = m·2^e, m in [0.5, 1), exact
-    if (m < 0.70710678118654752) {
-        m *= 2;
-        --e;
-    }
-    const double t = (m - 1) / (m + 1), t2 = t * t;  // |t| < 0.172: log m = 2 atanh t
-    double s = 0;
-    for (int k = 25; k >= 1; k -= 2) s = s * t2 + 1.0 / k;
-    return 2 * t * s + e * kLn2;
-}
-
-void det_sincos(double x, double& s, double& c) {  // radians
-    const double r = x - 2 * kPi * std::floor(x / (2 * kPi) + 0.5);  // [-pi, pi]
-    const double r2 = r * r;
-    double ts = r, tc = 1;
-    s = r;
-    c = 1;
-    for (int k = 1; k <= 16; ++k) {
-        ts *= -r2 / ((2 * k) * (2 * k + 1));
-        tc *= -r2 / ((2 * k - 1) * (2 * k));
-        s += ts;
-        c += tc;
-    }
-}
 
 double uniform01(Pcg32& rng) { return (rng.next() + 0.5) * (1.0 / 4294967296.0); }  // (0, 1)
 double uniform(Pcg32& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
@@ -222,7 +181,11 @@ double distance(Point2 a, Point2 b) {  // px
 
 LineScene::LineScene(const SceneOptions& options) : options_(options) {
     if (options.width < 1 || options.height < 1 || !(options.noise_sigma >= 0) ||
-        !(options.blur_sigma >= 0) || options.clutter_blobs < 0 || options.clutter_texture < 0)
+        !(options.blur_sigma >= 0) || options.clutter_blobs < 0 || options.clutter_texture < 0 ||
+        !std::isfinite(options.illumination.centre_x) || !std::isfinite(options.illumination.centre_y) ||
+        !std::isfinite(options.illumination.centre_gain) || !std::isfinite(options.illumination.ramp_x) ||
+        !std::isfinite(options.illumination.ramp_y) || !(options.illumination.falloff >= 0) ||
+        !std::isfinite(options.illumination.falloff))
         throw std::invalid_argument("LineScene: bad SceneOptions");
 }
 
@@ -254,10 +217,22 @@ GreyImage LineScene::render() const {
         Pcg32 rng(options_.seed, kStreamClutter);
         for (int i = 0; i < options_.clutter_blobs; ++i) {
             const std::vector<Point2> blob = random_blob(rng, w, h);
-            paint(buf, w, h, blob, rng.below(256));
+            paint(buf, w, h, blob, rng.below(options_.clutter_blob_max + 1u));
         }
     }
     for (const Shape& s : shapes_) paint(buf, w, h, s.polygon, s.level);
+    const SceneOptions::Illumination& light = options_.illumination;
+    if (light.centre_gain != 1 || light.ramp_x != 0 || light.ramp_y != 0 || light.falloff != 0) {
+        for (int y = 0; y < h; ++y) {
+            const double dy = y - light.centre_y;
+            for (int x = 0; x < w; ++x) {
+                const double dx = x - light.centre_x;
+                const double gain =
+                    light.centre_gain + light.ramp_x * dx + light.ramp_y * dy - light.falloff * (dx * dx + dy * dy);
+                buf[static_cast<std::size_t>(y) * w + x] *= std::max(0.0, gain);
+            }
+        }
+    }
     if (options_.blur_sigma > 0) blur(buf, w, h, options_.blur_sigma);
     if (options_.noise_sigma > 0) {
         Gaussian g(Pcg32(options_.seed, kStreamNoise));

@@ -32,11 +32,23 @@ struct SceneOptions {
     int clutter_blobs = 0;          // random filled discs/ellipses of random grey under the shapes
     int clutter_texture = 0;        // peak amplitude of a smooth random background texture, grey levels
     uint64_t seed = 1;              // texture, clutter and noise (and the random_* generators)
+    uint8_t clutter_blob_max = 255; // clutter blobs' grey levels are uniform in 0..clutter_blob_max
+    // Smooth multiplicative illumination of the composed scene (background, texture, blobs and
+    // shapes), applied before blur and noise; with d = (x − centre_x, y − centre_y) px:
+    //   gain(x, y) = max(0, centre_gain + ramp_x·d.x + ramp_y·d.y − falloff·|d|²).
+    // The defaults are gain ≡ 1: the render is then unchanged (the multiply is skipped).
+    struct Illumination {
+        double centre_x = 0, centre_y = 0;  // px, origin of the ramp and centre of the falloff
+        double centre_gain = 1;             // gain at the centre, before the falloff
+        double ramp_x = 0, ramp_y = 0;      // gain change per px along x and along y
+        double falloff = 0;                 // gain decrease per px² of squared distance, >= 0
+    } illumination;
 };
 
 class LineScene {
 public:
-    // Throws std::invalid_argument on a non-positive size or negative sigma/count.
+    // Throws std::invalid_argument on a non-positive size, a negative sigma/count/falloff or a
+    // non-finite illumination parameter.
     explicit LineScene(const SceneOptions& options);
 
     // A straight line of `width_px` pixels thickness (the rectangle a-b widened by width_px / 2
@@ -49,7 +61,8 @@ public:
     // Throws std::invalid_argument for fewer than 3 vertices.
     void add_polygon(const std::vector<Point2>& vertices, uint8_t level);
 
-    // Background (+ texture, + clutter blobs), the shapes in the order added, blur, noise;
+    // Background (+ texture, + clutter blobs), the shapes in the order added, illumination,
+    // blur, noise;
     // rounded and clamped to 0..255. Coverage: 8×8 samples per pixel on edge pixels.
     GreyImage render() const;
 

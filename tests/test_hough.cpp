@@ -121,7 +121,7 @@ TEST_CASE("degenerate frames: blank, all-edge noise, one pixel, lines along ever
     scene::GreyImage noise(320, 240);
     Pcg32 rng(5);
     for (uint8_t& v : noise.pixels) v = static_cast<uint8_t>(rng.next());
-    REQUIRE(detect(noise, p) == Status::ok);
+    REQUIRE(detect(noise, p) == Status::capacity_exceeded);
     const LineStats& s = g_det.stats();
     REQUIRE(s.edges == 4096);  // the capacity, and the rest is reported, not lost silently
     REQUIRE(s.edges_dropped > 0);
@@ -149,12 +149,12 @@ TEST_CASE("limits are reported: segment capacity, walk budget, bad parameters", 
     LineParams p;
     REQUIRE(small.begin_frame(320, 240, p) == Status::ok);
     for (int y = 0; y < 240; ++y) REQUIRE(small.push_row(img.row(y), 320) == Status::ok);
-    REQUIRE(small.finish() == Status::ok);
+    REQUIRE(small.finish() == Status::capacity_exceeded);
     REQUIRE(small.segment_count() == 3);
     REQUIRE(small.stats().hough.segments_dropped > 0);
 
     p.hough.max_walk_steps = 50;
-    REQUIRE(detect(img, p) == Status::ok);
+    REQUIRE(detect(img, p) == Status::capacity_exceeded);
     REQUIRE(g_det.stats().hough.budget_exhausted);
     REQUIRE(g_det.stats().hough.walk_steps == 50);
 

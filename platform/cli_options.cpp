@@ -1,0 +1,234 @@
+#include "cli_options.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <vector>
+
+#include "board_runner.h"
+
+namespace qt::cli {
+
+namespace {
+
+struct Option {
+    const char* name;
+    const char* value;  // placeholder in the help
+    const char* help;   // with unit and range
+    std::function<std::string(DetectOptions)> show;  // the value in a copy of the options
+    std::function<bool(const std::string&, DetectOptions&, std::string&)> set;  // parse, check, store
+};
+
+bool parse_int(const std::string& text, long lo, long hi, long& out, std::string& error) {
+    errno = 0;
+    char* end = nullptr;
+    const long v = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno != 0) {
+        error = "'" + text + "' is not an integer";
+        return false;
+    }
+    if (v < lo || v > hi) {
+        error = text + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi);
+        return false;
+    }
+    out = v;
+    return true;
+}
+
+// A decimal number into q16_16 (rounded to nearest 2^-16) within [lo, hi].
+bool parse_q16(const std::string& text, double lo, double hi, q16_16& out, std::string& error) {
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v)) {
+        error = "'" + text + "' is not a number";
+        return false;
+    }
+    if (v < lo || v > hi) {
+        char range[64];
+        std::snprintf(range, sizeof range, "%g..%g", lo, hi);
+        error = text + " is out of range " + range;
+        return false;
+    }
+    out = q16_16::from_raw(std::llround(v * 65536.0));
+    return true;
+}
+
+std::string show_q16(q16_16 v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v.raw / 65536.0);
+    return buf;
+}
+
+std::string show_deg(angle_t a) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", a / 4294967296.0 * 360.0);
+    return buf;
+}
+
+// An integer flag stored in a uint16_t, uint32_t or uint64_t field.
+template <typename T>
+Option integer(const char* name, const char* value, const char* help, long lo, long hi,
+               std::function<T&(DetectOptions&)> field) {
+    return {name, value, help,
+            [field](DetectOptions o) { return std::to_string(field(o)); },
+            [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
+                long v = 0;
+                if (!parse_int(t, lo, hi, v, e)) return false;
+                field(o) = static_cast<T>(v);
+                return true;
+            }};
+}
+
+Option decimal(const char* name, const char* value, const char* help, double lo, double hi,
+               std::function<q16_16&(DetectOptions&)> field) {
+    return {name, value, help,
+            [field](DetectOptions o) { return show_q16(field(o)); },
+            [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
+                return parse_q16(t, lo, hi, field(o), e);
+            }};
+}
+
+Option degrees(const char* name, const char* help, double lo, double hi, std::function<angle_t&(DetectOptions&)> field) {
+    return {name, "DEG", help,
+            [field](DetectOptions o) { return show_deg(field(o)); },
+            [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
+                q16_16 deg;
+                if (!parse_q16(t, lo, hi, deg, e)) return false;
+                field(o) = angle_from_deg(deg);
+                return true;
+            }};
+}
+
+const std::vector<Option>& table() {
+    static const std::vector<Option> options = {
+        integer<uint16_t>("edge-threshold", "LEVEL", "edge pixel: L1 gradient magnitude |gx|+|gy| at least this, grey levels, 1..510", 1, 510,
+                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.edge_threshold; }),
+        integer<uint16_t>("theta-bins", "N", "Hough accumulator angle bins over 180 degrees (90 = 2 degrees each), 2..90", 2, 90,
+                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.theta_bins; }),
+        {"rho", "PX", "Hough accumulator distance resolution, pixels: 2 or 4 (the VGA build's accumulator has no room for 1)",
+         [](DetectOptions o) { return std::to_string(o.params.lines.hough.rho_step); },
+         [](const std::string& t, DetectOptions& o, std::string& e) {
+             long v = 0;
+             if (!parse_int(t, 2, 4, v, e)) return false;
+             if (v == 3) {
+                 e = "3 is not 2 or 4";
+                 return false;
+             }
+             o.params.lines.hough.rho_step = static_cast<uint16_t>(v);
+             return true;
+         }},
+        integer<uint16_t>("threshold", "VOTES", "PPHT vote threshold: votes a bin needs before its line is followed, 1..255", 1, 255,
+                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.threshold; }),
+        integer<uint16_t>("min-line-length", "PX", "PPHT minimum line length, pixels, 2..2048", 2, 2048,
+                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.min_line_length; }),
+        integer<uint16_t>("max-gap", "PX", "PPHT maximum gap inside a line, pixels, 0..255", 0, 255,
+                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_line_gap; }),
+        integer<uint16_t>("vote-window", "DEG", "a point votes for normals within +-DEG of its gradient direction, degrees, 1..90 (90 = all)", 1, 90,
+                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.vote_window_deg; }),
+        integer<uint32_t>("max-walk-steps", "N", "PPHT line-following budget per frame, steps, 1..100000000", 1, 100000000,
+                          [](DetectOptions& o) -> uint32_t& { return o.params.lines.hough.max_walk_steps; }),
+        integer<uint64_t>("seed", "N", "PPHT visiting order seed, 0..2147483647", 0, 2147483647,
+                          [](DetectOptions& o) -> uint64_t& { return o.params.lines.hough.seed; }),
+        decimal("cluster-distance", "PX", "clustering similarity threshold S(li,lj) = |Ci - Cj|, pixels, 0..1000", 0, 1000,
+                [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.distance; }),
+        degrees("cluster-angle", "clustering: largest orientation difference of merged lines, degrees, 0..90", 0, 90,
+                [](DetectOptions& o) -> angle_t& { return o.params.lines.cluster.max_angle; }),
+        decimal("cluster-gap", "PX", "clustering: largest gap between merged segments along the line, pixels, 0..2048", 0, 2048,
+                [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.gap; }),
+        degrees("parallel-tolerance", "rule 1: largest angle between opposite sides, degrees, 0..45", 0, 45,
+                [](DetectOptions& o) -> angle_t& { return o.params.quads.parallel_tolerance; }),
+        degrees("perpendicular-tolerance", "rule 2: largest deviation of adjacent sides from 90 degrees, degrees, 0..60", 0, 60,
+                [](DetectOptions& o) -> angle_t& { return o.params.quads.perpendicular_tolerance; }),
+        decimal("corner-margin", "PX", "rule 3: corners at least this far inside the frame, pixels, 0..1000", 0, 1000,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.corner_margin; }),
+        decimal("min-side", "PX", "rule 4: shortest side, pixels, 1..2048", 1, 2048,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_length; }),
+        decimal("max-side", "PX", "rule 4: longest side, pixels, 1..2048", 1, 2048,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.max_side_length; }),
+        decimal("aspect-tolerance", "FACTOR", "rule 5: largest factor between the side ratio and the display's, 1..10", 1, 10,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.aspect_tolerance; }),
+        decimal("min-coverage", "FRACTION", "each side covered by its line's segment at least this much, 0..1", 0, 1,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_coverage; }),
+        decimal("min-score", "FRACTION", "the four sides together covered at least this share of the perimeter, 0..1", 0, 1,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.min_score; }),
+        decimal("collinear-distance", "PX", "lines with both ends this close to a side's line also cover it, pixels, 0..100", 0, 100,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.collinear_distance; }),
+        {"contrast", "bright|dark|any", "the board is brighter (or darker) than its surroundings on every side, or either",
+         [](DetectOptions o) {
+             return std::string(o.params.quads.contrast == Contrast::bright_board ? "bright"
+                                : o.params.quads.contrast == Contrast::dark_board ? "dark" : "any");
+         },
+         [](const std::string& t, DetectOptions& o, std::string& e) {
+             if (t == "bright") o.params.quads.contrast = Contrast::bright_board;
+             else if (t == "dark") o.params.quads.contrast = Contrast::dark_board;
+             else if (t == "any") o.params.quads.contrast = Contrast::any;
+             else {
+                 e = "'" + t + "' is not bright, dark or any";
+                 return false;
+             }
+             return true;
+         }},
+        {"display", "WxH", "display area in display pixels: its aspect W/H is rule 5's ratio, and the display homography maps it, 1..4096 each",
+         [](DetectOptions o) { return std::to_string(o.display_width) + "x" + std::to_string(o.display_height); },
+         [](const std::string& t, DetectOptions& o, std::string& e) {
+             const size_t x = t.find('x');
+             long w = 0, h = 0;
+             if (x == std::string::npos) {
+                 e = "'" + t + "' is not WxH";
+                 return false;
+             }
+             if (!parse_int(t.substr(0, x), 1, 4096, w, e) || !parse_int(t.substr(x + 1), 1, 4096, h, e)) return false;
+             o.display_width = static_cast<uint16_t>(w);
+             o.display_height = static_cast<uint16_t>(h);
+             o.params.quads.display_aspect = q16_16::from_ratio(w, h);
+             return true;
+         }},
+        integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1, HostBoardDetector::max_quads(),
+                          [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
+    };
+    return options;
+}
+
+const Option* lookup(const std::string& name) {
+    for (const Option& o : table())
+        if (name == o.name) return &o;
+    return nullptr;
+}
+
+}  // namespace
+
+DetectOptions::DetectOptions() {
+    params.quads.display_aspect = q16_16::from_ratio(display_width, display_height);
+}
+
+bool is_option(const std::string& name) { return lookup(name) != nullptr; }
+
+bool apply_option(const std::string& name, const std::string& value, DetectOptions& options, std::string& error) {
+    const Option* o = lookup(name);
+    if (o == nullptr) {
+        error = "unknown option '--" + name + "'";
+        return false;
+    }
+    std::string why;
+    if (!o->set(value, options, why)) {
+        error = "--" + name + ": " + why;
+        return false;
+    }
+    return true;
+}
+
+std::string options_help() {
+    const DetectOptions defaults;
+    std::string text;
+    for (const Option& o : table()) {
+        std::string flag = std::string("  --") + o.name + " " + o.value;
+        if (flag.size() < 34) flag.resize(34, ' ');
+        text += flag + o.help + " (default " + o.show(defaults) + ")\n";
+    }
+    return text;
+}
+
+}  // namespace qt::cli

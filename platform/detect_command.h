@@ -1,0 +1,16 @@
+// `quadtrack detect IMAGE [OPTIONS]`: one frame in, its lines and quadrangles as JSON out.
+#pragma once
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace qt::cli {
+
+// args: everything after "detect". Writes the JSON (one line) to `out`, one error line to
+// `err`. Returns the exit status: 0 ok, 1 bad input file or frame, 2 bad command line.
+int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* err);
+
+// The usage text of detect, with every option.
+std::string detect_usage();
+
+}  // namespace qt::cli
