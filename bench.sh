@@ -4,6 +4,8 @@
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
 #   lines-host     lines stage accuracy table, vote window, VGA time vs OpenCV, RAM table
 #   lines-m4       instructions per stage of the QVGA lines detector on Cortex-M4 (QEMU -icount)
+#   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
+#                  false detections, time (+ OpenCV's squares.cpp recipe when installed)
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
 #   fpga           iCE40 UP5K and HX8K logic cells, block RAMs and Fmax (yosys + nextpnr)
 # With no NAME, runs them all.
@@ -12,7 +14,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host gradient-m4 lines-m4 hdl-latency fpga)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host gradient-m4 lines-m4 hdl-latency fpga)
 
 host_build() {
     ensure_packages cmake make g++ catch2 iverilog
@@ -40,6 +42,9 @@ for name in "${names[@]}"; do
         lines-host)
             host_build bench_lines
             ./build/host/platform/bench_lines ;;
+        quads-host)
+            host_build bench_quads
+            ./build/host/platform/bench_quads ;;
         gradient-m4)
             run_m4 gradient_bench ;;
         lines-m4)

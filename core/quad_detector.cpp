@@ -38,6 +38,16 @@ int64_t side_support(Point16 a, Point16 b, const Segment* lines, uint16_t n, uin
     return covered < side_length ? covered : side_length;
 }
 
+// Whether every corner of a lies within `tolerance` (per axis) of the same corner of b.
+bool same_quad(const Quad& a, const Quad& b, q16_16 tolerance) {
+    for (int i = 0; i < 4; ++i) {
+        const int64_t dx = static_cast<int64_t>(a.corners[i].x.raw) - b.corners[i].x.raw;
+        const int64_t dy = static_cast<int64_t>(a.corners[i].y.raw) - b.corners[i].y.raw;
+        if (dx > tolerance.raw || dx < -tolerance.raw || dy > tolerance.raw || dy < -tolerance.raw) return false;
+    }
+    return true;
+}
+
 // Strict "a ranks before b": score, then perimeter, then line indices.
 bool ranks_before(const Quad& a, int64_t perim_a, const Quad& b, int64_t perim_b) {
     if (a.score != b.score) return a.score > b.score;
@@ -163,8 +173,17 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             }
             ++stats->accepted;
 
-            // Keep the best `capacity`, in rank order (insertion; capacity is small).
+            // One quadrangle found twice (a side on two collinear lines, say) is reported once,
+            // as its better-ranked candidate.
             if (capacity == 0) continue;
+            uint16_t dup = 0;
+            while (dup < *count && !same_quad(out[dup], cand, params.collinear_distance)) ++dup;
+            if (dup < *count) {
+                if (!ranks_before(cand, perim, out[dup], perimeter(out[dup]))) continue;
+                for (uint16_t k = dup; k + 1u < *count; ++k) out[k] = out[k + 1];
+                --*count;
+            }
+            // Keep the best `capacity`, in rank order (insertion; capacity is small).
             if (*count == capacity && !ranks_before(cand, perim, out[capacity - 1], perimeter(out[capacity - 1])))
                 continue;
             uint16_t at = *count < capacity ? *count : static_cast<uint16_t>(capacity - 1);

@@ -48,7 +48,8 @@ struct LinePair {
 };
 
 // Finds quadrangles among lines[0 .. n) (n <= 255) in a width × height frame. Writes the best
-// `capacity` candidates, highest score first (ties: larger perimeter first, then lower line
+// `capacity` distinct candidates (two whose corners all lie within collinear_distance of each
+// other are one quadrangle, reported once), highest score first (ties: larger perimeter first, then lower line
 // indices), to out[0 .. *count). `pairs` is scratch for pair_capacity parallel pairs.
 // Returns bad_size for n > 255 or a zero frame size, capacity_exceeded when parallel pairs
 // were dropped (the quads found are still valid and written), ok otherwise.

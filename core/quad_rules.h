@@ -32,7 +32,7 @@ struct QuadParams {
     // Rule 1: opposite sides almost parallel — largest angle between them, degrees.
     angle_t parallel_tolerance = angle_from_deg(34);
     // Rule 2: adjacent sides almost perpendicular — largest deviation from 90°, degrees.
-    angle_t perpendicular_tolerance = angle_from_deg(32);
+    angle_t perpendicular_tolerance = angle_from_deg(35);
     // Rule 3: corners inside the image — at least this far inside the frame's outer pixel
     // edges (the frame spans [-0.5, width - 0.5] × [-0.5, height - 0.5]), pixels.
     q16_16 corner_margin = q16_16::from_int(0);

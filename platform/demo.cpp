@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "board_scene.h"
+#include "demo_sequence.h"
+#include "image_io.h"
 #include "gradient_stage.h"
 #include "line_detector.h"
 #include "overlay.h"
@@ -85,6 +87,12 @@ int run_demo(const std::string& out_dir) {
     std::printf("strong pixels per direction bin (22.5 deg each, 0 = +x, 4 = +y/down):");
     for (uint32_t n : strong_per_bin) std::printf(" %u", n);
     std::printf("\n");
+    std::string error;
+    if (!io::write_pgm(out_dir + "/input.pgm", frame, error)) {
+        std::fprintf(stderr, "quadtrack demo: %s\n", error.c_str());
+        return 1;
+    }
+    std::printf("wrote %s/input.pgm (try: quadtrack detect %s/input.pgm)\n", out_dir.c_str(), out_dir.c_str());
     bool ok = save(out_dir + "/input.png", w, h, 1, frame.pixels) &&
               save(out_dir + "/gradient_magnitude.png", w, h, 1, magnitude) &&
               save(out_dir + "/gradient_direction.png", w, h, 3, direction);
@@ -118,6 +126,7 @@ int run_demo(const std::string& out_dir) {
                     l.rho.raw / 65536.0, angle_to_deg(l.theta).raw / 65536.0, l.points);
     }
     ok = ok && save(out_dir + "/lines.png", w, h, 3, overlay.pixels);
+    ok = ok && run_demo_sequence(out_dir);
     return ok ? 0 : 1;
 }
 

@@ -30,4 +30,12 @@ void RgbImage::line(double x1, double y1, double x2, double y2, Rgb c) {
     }
 }
 
+void RgbImage::ring(double x, double y, double r, Rgb c) {
+    const int steps = static_cast<int>(std::ceil(8 * r)) + 8;
+    for (int i = 0; i < steps; ++i) {
+        const double a = 6.283185307179586 * i / steps;
+        set(static_cast<int>(std::lround(x + r * std::cos(a))), static_cast<int>(std::lround(y + r * std::sin(a))), c);
+    }
+}
+
 }  // namespace qt::io

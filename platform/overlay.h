@@ -21,6 +21,8 @@ struct RgbImage {
     void set(int x, int y, Rgb c);  // ignores points outside
     // A line between two points in pixels (centres at integers), one pixel wide.
     void line(double x1, double y1, double x2, double y2, Rgb c);
+    // A ring of radius r pixels around (x, y).
+    void ring(double x, double y, double r, Rgb c);
 };
 
 }  // namespace qt::io

@@ -264,3 +264,47 @@ TEST_CASE("degenerate line sets give no quadrangle and no error", "[quad]") {
     CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, out, 1, &count, &stats) == Status::bad_size);
     CHECK(count == 0);
 }
+
+TEST_CASE("contrast: the board's inside is on every side's bright side", "[quad]") {
+    // Rectangle (10, 10) – (110, 85). Normals (segment_reference.h): top θ 90° and left θ 0°
+    // point into the board, right θ 0° and bottom θ 90° point out of it.
+    auto lines = sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));  // top, right, bottom, left
+    const int8_t inward[4] = {+1, -1, -1, +1};
+    for (int i = 0; i < 4; ++i) lines[i].bright_side = inward[i];
+    CHECK(find(lines, 320, 240).quads.size() == 1);
+
+    auto mixed = lines;
+    mixed[2].bright_side = +1;  // the bottom edge brighter outside: not a bright board
+    const Found f = find(mixed, 320, 240);
+    CHECK(f.quads.empty());
+    CHECK(f.stats.rejected_contrast == 1);
+    QuadParams any;
+    any.contrast = Contrast::any;
+    CHECK(find(mixed, 320, 240, any).quads.size() == 1);
+
+    auto dark = lines;
+    for (Segment& s : dark) s.bright_side = static_cast<int8_t>(-s.bright_side);
+    CHECK(find(dark, 320, 240).quads.empty());
+    QuadParams dark_board;
+    dark_board.contrast = Contrast::dark_board;
+    CHECK(find(dark, 320, 240, dark_board).quads.size() == 1);
+}
+
+TEST_CASE("support: a side cut in two by an occluder counts both pieces", "[quad]") {
+    // Left side x = 10 from y 10 to 85 (75 px): pieces 10..32 and 63..85, 22 px each (0.29).
+    auto s = sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));
+    std::vector<Segment> one = {s[0], s[1], s[2], segment(10, 85, 10, 63)};
+    const Found f = find(one, 320, 240);
+    CHECK(f.quads.empty());
+    CHECK(f.stats.rejected_support == 1);
+    std::vector<Segment> both = one;
+    both.push_back(segment(10, 32, 10, 10));
+    const Found g = find(both, 320, 240);
+    REQUIRE(g.quads.size() == 1);
+    // (100 + 75 + 100 + 44) / 350 of the perimeter.
+    CHECK(std::fabs(from_q16(g.quads[0].score) - 319.0 / 350) < 1e-4);
+    // A parallel line 3 px to the side is another edge, not a piece of this one.
+    std::vector<Segment> beside = one;
+    beside.push_back(segment(13, 32, 13, 10));
+    CHECK(find(beside, 320, 240).quads.empty());
+}
