@@ -19,9 +19,11 @@ const char* kUsage =
     "                     find the board's lines and quadrangles in one PGM/PPM/Y4M frame and\n"
     "                     print them as JSON; options: quadtrack detect --help\n"
     "  demo [--out DIR]   run the pipeline on the built-in synthetic board scene and write\n"
-    "                     pictures under DIR (default: demo_out): input.png,\n"
-    "                     gradient_magnitude.png (L1 |g| in grey levels, clipped at 255) and\n"
-    "                     gradient_direction.png (hue = direction bin, brightness = |g|)\n"
+    "                     pictures under DIR (default: demo_out): input.png and input.pgm,\n"
+    "                     gradient_magnitude.png (L1 |g| in grey levels, clipped at 255),\n"
+    "                     gradient_direction.png (hue = direction bin, brightness = |g|),\n"
+    "                     lines.png, and board_00.png .. board_11.png: a moving board with\n"
+    "                     its lines, detected quadrangle and corners\n"
     "  --help             this text\n";
 
 }  // namespace
