@@ -4,12 +4,11 @@ namespace qt {
 
 namespace {
 
-// Signed distance of the middle of segment s from line l (its normal form), pixels, q16_16.
-int64_t separation(const Segment& l, const Segment& s) {
-    const SinCos n = sin_cos(l.theta);
-    const int64_t mx = (static_cast<int64_t>(s.x1.raw) + s.x2.raw) / 2;
-    const int64_t my = (static_cast<int64_t>(s.y1.raw) + s.y2.raw) / 2;
-    return shr_round_half_away(mx * n.cos.raw + my * n.sin.raw, 30) - l.rho.raw;
+// Distance of the middle of segment s from line l with normal n, pixels, q16_16.
+int64_t separation(const Segment& l, SinCos n, const Segment& s) {
+    const int64_t d = signed_distance(l, n, (static_cast<int64_t>(s.x1.raw) + s.x2.raw) / 2,
+                                      (static_cast<int64_t>(s.y1.raw) + s.y2.raw) / 2);
+    return d < 0 ? -d : d;
 }
 
 int64_t perimeter(const Quad& q) {
@@ -24,8 +23,8 @@ int64_t side_support(Point16 a, Point16 b, const Segment* lines, uint16_t n, uin
                      const QuadParams& p) {
     const Segment& l = lines[on];
     const SinCos nl = sin_cos(l.theta);
-    auto off_line = [&](q16_16 x, q16_16 y) {  // |n·p − rho|, q16_16
-        const int64_t d = shr_round_half_away(static_cast<int64_t>(x.raw) * nl.cos.raw + static_cast<int64_t>(y.raw) * nl.sin.raw, 30) - l.rho.raw;
+    auto off_line = [&](q16_16 x, q16_16 y) {  // pixels, q16_16
+        const int64_t d = signed_distance(l, nl, x.raw, y.raw);
         return d < 0 ? -d : d;
     };
     int64_t covered = 0;
@@ -104,10 +103,10 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
     uint16_t npairs = 0;
     const int64_t min_sep = params.min_side_length.raw / 2, max_sep = params.max_side_length.raw;
     for (uint16_t i = 0; i < n; ++i) {
+        const SinCos normal = sin_cos(lines[i].theta);
         for (uint16_t j = static_cast<uint16_t>(i + 1); j < n; ++j) {
             if (!rule_parallel(lines[i].theta, lines[j].theta, params)) continue;
-            int64_t sep = separation(lines[i], lines[j]);
-            sep = sep < 0 ? -sep : sep;
+            const int64_t sep = separation(lines[i], normal, lines[j]);
             if (sep < min_sep || sep > max_sep) continue;
             if (npairs == pair_capacity) {
                 ++stats->pairs_dropped;

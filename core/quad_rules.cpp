@@ -54,6 +54,11 @@ bool rule_aspect(const q16_16 sides[4], const QuadParams& p) {
     return w_tol >= aspect_h && w <= aspect_tol_h;
 }
 
+int64_t signed_distance(const Segment& line, SinCos n, int64_t x, int64_t y) {
+    // Each product below 2^30 · 2^30: the sum fits easily.
+    return shr_round_half_away(x * n.cos.raw + y * n.sin.raw, 30) - wide(line.rho);
+}
+
 bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], const QuadParams& p) {
     if (p.contrast == Contrast::any) return true;
     int64_t mx = 0, my = 0;  // the centroid, q16_16; |corner| <= 16384 px keeps it below 2^30
@@ -66,11 +71,9 @@ bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], cons
     for (int i = 0; i < 4; ++i) {
         const Segment& s = *sides[i];
         if (s.bright_side == 0) continue;
-        const SinCos n = sin_cos(s.theta);
-        // n·centroid − rho, q16_46 (each product below 2^61): > 0 when the interior lies along
-        // +normal.
-        const int64_t side = mx * n.cos.raw + my * n.sin.raw - wide(s.rho) * q2_30::one_raw;
-        const bool interior_bright = (side > 0) == (s.bright_side > 0);
+        // The centroid of a convex quadrangle with sides >= 1 px is never on a side's line.
+        const bool interior_along_normal = signed_distance(s, sin_cos(s.theta), mx, my) > 0;
+        const bool interior_bright = interior_along_normal == (s.bright_side > 0);
         if (interior_bright != (p.contrast == Contrast::bright_board)) return false;
     }
     return true;

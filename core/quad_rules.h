@@ -79,6 +79,11 @@ bool rule_aspect(const q16_16 sides[4], const QuadParams& p);
 // unknown polarity (bright_side 0) pass.
 bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], const QuadParams& p);
 
+// Signed distance of the point (x, y) (q16_16 raw, |x|, |y| <= 16384 px) from `line`, whose
+// normal `normal` = sin_cos(line.theta) the caller computes once: n·p − rho, pixels, q16_16
+// raw, positive on the +normal side.
+int64_t signed_distance(const Segment& line, SinCos normal, int64_t x, int64_t y);
+
 // Where two lines (rho, theta of their normals) cross, pixels. False when they are closer to
 // parallel than ~0.06° (|sin| < 2^-10) or the crossing lies beyond ±16384 px.
 bool intersect_lines(const Segment& a, const Segment& b, Point16& out);
