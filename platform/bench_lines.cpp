@@ -17,6 +17,7 @@
 #include "line_detector.h"
 #include "line_match.h"
 #include "line_scene.h"
+#include "push_frame.h"
 
 #ifdef QT_HAVE_OPENCV
 #include <opencv2/core.hpp>
@@ -52,15 +53,10 @@ double median(std::vector<double> v) {
 template <class Det>
 double detect(Det& det, const sc::GreyImage& img, const qt::LineParams& params) {
     const auto t0 = Clock::now();
-    qt::Status s = det.begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height), params);
-    if (s != qt::Status::ok) fail("begin_frame", s);
-    for (int y = 0; y < img.height; ++y) {
-        s = det.push_row(img.row(y), static_cast<uint16_t>(img.width));
-        if (s != qt::Status::ok) fail("push_row", s);
-    }
-    s = det.finish();
+    const qt::Status s = sc::push_frame(det, img, params);
     const auto t1 = Clock::now();
-    if (s != qt::Status::ok) fail("finish", s);
+    // A full capacity is counted in the stats and the lines found are still scored.
+    if (s != qt::Status::ok && s != qt::Status::capacity_exceeded) fail("frame", s);
     return std::chrono::duration<double>(t1 - t0).count();
 }
 

@@ -23,6 +23,7 @@
 
 #include "board_bench_scene.h"
 #include "board_detector.h"
+#include "push_frame.h"
 
 #ifdef QT_HAVE_OPENCV
 #include "opencv_squares.h"
@@ -78,10 +79,7 @@ struct Tally {
 qt::BoardDetectorQvga g_det;
 
 bool detect_with(const sc::GreyImage& img, const qt::BoardParams& params, Corners& c) {
-    qt::Status s = g_det.begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height), params);
-    if (s == qt::Status::previous_frame_incomplete) s = qt::Status::ok;
-    for (int y = 0; y < img.height && s == qt::Status::ok; ++y) s = g_det.push_row(img.row(y), static_cast<uint16_t>(img.width));
-    if (s == qt::Status::ok) s = g_det.finish();
+    const qt::Status s = sc::push_frame(g_det, img, params);
     if (s != qt::Status::ok && s != qt::Status::capacity_exceeded) {
         std::fprintf(stderr, "bench_quads: %s\n", qt::status_name(s));
         std::exit(1);

@@ -1,5 +1,7 @@
 #include "board_runner.h"
 
+#include "push_frame.h"
+
 namespace qt::cli {
 
 bool detect_board(const scene::GreyImage& frame, const BoardParams& params, DetectResult& result) {
@@ -11,10 +13,7 @@ bool detect_board(const scene::GreyImage& frame, const BoardParams& params, Dete
         result.status = Status::bad_size;
         return false;
     }
-    Status s = det.begin_frame(result.width, result.height, params);
-    if (s == Status::previous_frame_incomplete) s = Status::ok;
-    for (int y = 0; y < frame.height && s == Status::ok; ++y) s = det.push_row(frame.row(y), result.width);
-    if (s == Status::ok) s = det.finish();
+    const Status s = scene::push_frame(det, frame, params);
     result.status = s;
     if (s != Status::ok && s != Status::capacity_exceeded) return false;
     const auto& lines = det.lines();

@@ -7,6 +7,7 @@
 
 #include "board_bench_scene.h"
 #include "board_detector.h"
+#include "push_frame.h"
 
 using namespace qt;
 
@@ -15,11 +16,7 @@ namespace {
 BoardDetectorQvga g_det;
 
 uint16_t detect(const scene::GreyImage& img) {
-    Status s = g_det.begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height), BoardParams{});
-    if (s == Status::previous_frame_incomplete) s = Status::ok;
-    REQUIRE(s == Status::ok);
-    for (int y = 0; y < img.height; ++y) REQUIRE(g_det.push_row(img.row(y), static_cast<uint16_t>(img.width)) == Status::ok);
-    s = g_det.finish();
+    const Status s = scene::push_frame(g_det, img, BoardParams{});
     REQUIRE((s == Status::ok || s == Status::capacity_exceeded));
     return g_det.quad_count();
 }
