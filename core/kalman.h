@@ -42,7 +42,7 @@
 // fraction bits and P has 32) apart from saturation. In update the reciprocal's mantissa rounds
 // half up (positive); every product rounds half away from zero to its destination format. No
 // signed overflow anywhere: all products are formed in 128 bits from 32-bit limbs
-// (mul_shr_round, below) and saturate when narrowed to 64 bits.
+// (mul_shr_round, wide_mul.h) and saturate when narrowed to 64 bits.
 //
 // Saturation. With no measurement the covariance of constant-velocity prediction grows like
 // a(n) = a0 + 2·b0·n + c0·n² + q·(n³/3 − n/12): from the default P0 (q = 1) a is 1.33·10^6 px²
@@ -139,12 +139,5 @@ private:
     q16_16 q_ = q16_16::from_int(1);       // px²/frame⁴
     uint8_t flags_ = 0;
 };
-
-namespace detail {
-// round(a·b / 2^n), ties away from zero, saturated to ±(2^63 − 1); 0 <= n <= 126. The product
-// is formed exactly in 128 bits from four 32×32 → 64-bit products (UMULL on Cortex-M), so
-// there is no overflow for any int64 operands.
-int64_t mul_shr_round(int64_t a, int64_t b, int n);
-}  // namespace detail
 
 }  // namespace qt

@@ -5,6 +5,7 @@
 
 #include "fixed.h"
 #include "prng.h"
+#include "wide_mul.h"
 
 using namespace qt;
 
@@ -108,4 +109,28 @@ TEST_CASE("add_sat, sub_sat and neg_sat saturate instead of overflowing", "[fixe
     REQUIRE(q16_16::from_ratio(-5, 2).round_int() == -3);
     REQUIRE(q16_16::from_ratio(-5, 2).floor_int() == -3);
     REQUIRE(q16_16::from_ratio(-9, 4).round_int() == -2);
+}
+
+TEST_CASE("wide 64x64 products round half away and saturate, against __int128", "[fixed]") {
+    Pcg32 rng(7);
+    for (int i = 0; i < 200000; ++i) {
+        const int bits_a = static_cast<int>(rng.below(64)), bits_b = static_cast<int>(rng.below(64));
+        const int64_t a = static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (63 - bits_a)) *
+                          (rng.below(2) ? 1 : -1);
+        const int64_t b = static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (63 - bits_b)) *
+                          (rng.below(2) ? 1 : -1);
+        const int n = static_cast<int>(rng.below(127));
+        const __int128 p = static_cast<__int128>(a) * b;
+        const __int128 mag = p < 0 ? -p : p;
+        __int128 q = n == 0 ? mag : (mag + (static_cast<__int128>(1) << (n - 1))) >> n;
+        if (q > INT64_MAX) q = INT64_MAX;
+        const int64_t want = static_cast<int64_t>(p < 0 ? -q : q);
+        INFO(a << " * " << b << " >> " << n);
+        REQUIRE(mul_shr_round(a, b, n) == want);
+    }
+    REQUIRE(mul_shr_round(INT64_MIN, INT64_MIN, 0) == INT64_MAX);
+    REQUIRE(mul_shr_round(INT64_MIN, INT64_MAX, 0) == -INT64_MAX);
+    REQUIRE(mul_shr_round(INT64_MIN, INT64_MIN, 126) == 1);  // 2^126 / 2^126
+    REQUIRE(mul_shr_round(-3, 1, 1) == -2);                  // -1.5: away from zero
+    REQUIRE(mul_shr_round(3, 1, 1) == 2);
 }
