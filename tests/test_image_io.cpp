@@ -96,6 +96,21 @@ void check_read_fails(const std::string& path, const std::string& fragment) {
     check_message(error, path, fragment);
 }
 
+// The sequence `spec` delivers one frame, then fails saying `fragment` about `path`, and keeps
+// failing with the same message.
+void check_second_frame_fails(const std::string& spec, const std::string& path, const std::string& fragment) {
+    FrameSource src;
+    std::string error;
+    REQUIRE(src.open(spec, error));
+    GreyImage img;
+    REQUIRE(src.next(img, error) == FrameSource::Next::frame);
+    CHECK(src.next(img, error) == FrameSource::Next::error);
+    check_message(error, path, fragment);
+    std::string again;
+    CHECK(src.next(img, again) == FrameSource::Next::error);
+    CHECK(again == error);
+}
+
 GreyImage read_ok(const std::string& path) {
     GreyImage img;
     std::string error;
@@ -316,16 +331,7 @@ TEST_CASE("FrameSource: printf patterns of PGM files and single images", "[image
     SECTION("a bad frame file stops the sequence with its own name in the message") {
         tmp.file("h0.pgm", "P5 1 1 255\n" + bytes({1}));
         const std::string bad = tmp.file("h1.pgm", "P5 2 2 255\n" + bytes({1}));
-        FrameSource src;
-        std::string error;
-        REQUIRE(src.open(tmp.path("h%d.pgm"), error));
-        GreyImage img;
-        REQUIRE(src.next(img, error) == FrameSource::Next::frame);
-        CHECK(src.next(img, error) == FrameSource::Next::error);
-        check_message(error, bad, "truncated pixel data: expected 4 bytes, got 1");
-        std::string again;
-        CHECK(src.next(img, again) == FrameSource::Next::error);
-        CHECK(again == error);
+        check_second_frame_fails(tmp.path("h%d.pgm"), bad, "truncated pixel data: expected 4 bytes, got 1");
     }
     SECTION("a single image is a sequence of one") {
         const std::string p = tmp.file("one.pgm", "P5 1 1 255\n" + bytes({200}));
@@ -468,16 +474,7 @@ TEST_CASE("Y4M errors: one line, path first, frame numbers from 0", "[image_io]"
                          "Y4M frame 0: truncated (file ends inside the FRAME line)");
         // Frame 1's marker is garbled: frame 0 is delivered, then the error, then the same error.
         const std::string p = tmp.file("f4.y4m", "YUV4MPEG2 W5 H3\n" + frame15 + "FRAMES\n" + repeat(1, 27));
-        FrameSource src;
-        std::string error;
-        REQUIRE(src.open(p, error));
-        GreyImage img;
-        REQUIRE(src.next(img, error) == FrameSource::Next::frame);
-        CHECK(src.next(img, error) == FrameSource::Next::error);
-        check_message(error, p, "Y4M frame 1: bad FRAME marker 'FRAMES'");
-        std::string again;
-        CHECK(src.next(img, again) == FrameSource::Next::error);
-        CHECK(again == error);
+        check_second_frame_fails(p, p, "Y4M frame 1: bad FRAME marker 'FRAMES'");
     }
     SECTION("truncated frame") {
         // 5 x 3 420: 15 Y + 12 chroma = 27 bytes a frame. Frame 1 stops inside its chroma (20
@@ -485,13 +482,7 @@ TEST_CASE("Y4M errors: one line, path first, frame numbers from 0", "[image_io]"
         for (int have : {20, 9}) {
             const std::string p =
                 tmp.file("t.y4m", "YUV4MPEG2 W5 H3 C420jpeg\n" + frame15 + "FRAME\n" + repeat(3, have));
-            FrameSource src;
-            std::string error;
-            REQUIRE(src.open(p, error));
-            GreyImage img;
-            REQUIRE(src.next(img, error) == FrameSource::Next::frame);
-            CHECK(src.next(img, error) == FrameSource::Next::error);
-            check_message(error, p, "Y4M frame 1: truncated frame data: expected 27 bytes, got " + std::to_string(have));
+            check_second_frame_fails(p, p, "Y4M frame 1: truncated frame data: expected 27 bytes, got " + std::to_string(have));
         }
         check_read_fails(tmp.file("t0.y4m", "YUV4MPEG2 W5 H3\nFRAME\n" + repeat(1, 26)),
                          "Y4M frame 0: truncated frame data: expected 27 bytes, got 26");
