@@ -133,11 +133,11 @@ bool opencv(const sc::GreyImage& img, Corners& c) { return qt::bench::opencv_bes
 #endif
 
 void print_row(const char* method, const char* set, Tally& t, bool board) {
+    char rmse[16] = "  —  ";
+    if (t.corners) std::snprintf(rmse, sizeof rmse, "%.3f", std::sqrt(t.sum_sq / t.corners));
     if (board)
         std::printf("| %-22s | %-10s | %5d | %6.1f %% | %s | %5d | %7.3f |\n", method, set, t.scenes,
-                    100.0 * t.detected / t.scenes,
-                    t.corners ? std::to_string(std::sqrt(t.sum_sq / t.corners)).substr(0, 5).c_str() : "  —  ", t.wrong,
-                    t.median_ms());
+                    100.0 * t.detected / t.scenes, rmse, t.wrong, t.median_ms());
     else
         std::printf("| %-22s | %-10s | %5d |        — |      — | %5d (%.1f %%) | %7.3f |\n", method, set, t.scenes,
                     t.wrong, 100.0 * t.wrong / t.scenes, t.median_ms());
