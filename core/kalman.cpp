@@ -5,7 +5,6 @@
 
 namespace qt {
 
-
 namespace {
 
 constexpr int kCovFrac = KalmanAxis::cov_frac;                 // 32
@@ -30,52 +29,6 @@ static_assert(sizeof(KalmanAxis) == 32, "axis layout");
 static_assert(sizeof(PointKalman) <= 80, "RAM per filter as documented");
 
 int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : v > hi ? hi : v; }
-
-int bit_length(int64_t v) {  // v > 0: the n with 2^(n-1) <= v < 2^n
-    int n = 0;
-    while (v != 0) {
-        v >>= 1;
-        ++n;
-    }
-    return n;
-}
-
-// 1/s for s > 0 (covariance raw), as a 62-bit mantissa and an exponent:
-//   m = round_half_up(2^(len+61) / s) ∈ [2^61, 2^62],  1/s = m·2^-(len+61)·(1 ± 2^-62),
-// where s ∈ [2^(len-1), 2^len). This is the one division per axis, done by shift-and-subtract
-// (62 steps of unsigned compare and subtract; no divide instruction, none of the precision a
-// 32-bit divisor would lose). Every ratio x/S below is then a 128-bit product, exact to within
-// its last bit whatever the size of S.
-struct Reciprocal {
-    int64_t m;
-    int len;
-    // x/s with `frac` fraction bits, rounded half away: x·m·2^-(len+61-frac). |x| <= 2^62 and
-    // m <= 2^62 keep the product below 2^124; the shift is >= 29 + 61 - 59 > 0.
-    int64_t ratio(int64_t x, int frac) const { return mul_shr_round(x, m, len + 61 - frac); }
-};
-
-Reciprocal reciprocal(int64_t s) {
-    const int len = bit_length(s);  // len ∈ [29, 63]
-    const uint64_t d = static_cast<uint64_t>(s);
-    // Restoring division of 2^(len-1+62) by d: rem < d < 2^63 throughout, so 2·rem < 2^64.
-    uint64_t rem = static_cast<uint64_t>(1) << (len - 1);  // 2^(len-1) <= d: first digit 0 or 1
-    uint64_t q = 0;
-    if (rem >= d) {
-        q = 1;
-        rem -= d;
-    }
-    for (int i = 0; i < 62; ++i) {
-        rem <<= 1;
-        q <<= 1;
-        if (rem >= d) {
-            rem -= d;
-            q |= 1u;
-        }
-    }
-    // q = floor(2^(len+61)/d) <= 2^62; round half up on the next bit.
-    if ((rem << 1) >= d) ++q;
-    return Reciprocal{static_cast<int64_t>(q), len};
-}
 
 // S = a + r ∈ [2^28, 2^60 + 2^42]: the smallest is r's minimum, 2^-4 px² = 2^28 raw (never 0,
 // len >= 29); the largest stays below 2^62 (len <= 62, and the restoring division's d < 2^63).
@@ -185,6 +138,19 @@ void PointKalman::update(q16_16 zx, q16_16 zy) {
     const uint8_t fx = update_axis(x_, zx, r);
     const uint8_t fy = update_axis(y_, zy, r);
     flags_ = static_cast<uint8_t>(flags_ | fx | fy);
+}
+
+KalmanAxis kalman_axis_init(q16_16 pos, q16_16 p0_pos, q16_16 p0_vel) {
+    return KalmanAxis{pos, q16_16{0}, to_cov(q16_16::from_raw(clamp64(p0_pos.raw, 0, kP0Max))), 0,
+                      to_cov(q16_16::from_raw(clamp64(p0_vel.raw, 0, kP0Max)))};
+}
+
+uint8_t kalman_axis_predict(KalmanAxis& ax, q16_16 q) {
+    return predict_axis(ax, to_cov(q16_16::from_raw(clamp64(q.raw, 0, kQMax))));
+}
+
+uint8_t kalman_axis_update(KalmanAxis& ax, q16_16 z, q16_16 r) {
+    return update_axis(ax, z, to_cov(q16_16::from_raw(clamp64(r.raw, kRMin, kRMax))));
 }
 
 KalmanGain PointKalman::gain_x() const { return gain_of(x_, reciprocal(x_.pp + to_cov(r_))); }

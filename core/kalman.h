@@ -100,6 +100,13 @@ struct KalmanGain {
     int64_t k_vel;                       // K₂ = Ppv/S, 1/frame, |K₂| <= 2^15 (raw <= 2^59)
 };
 
+// One axis on its own, for filters built from it (the line tracker's angle, turn model).
+// Position pos, velocity 0, P = diag(p0_pos, p0_vel); q and r as in KalmanParams, clamped into
+// their ranges. predict and update return KalmanFlag bits.
+KalmanAxis kalman_axis_init(q16_16 pos, q16_16 p0_pos, q16_16 p0_vel);
+uint8_t kalman_axis_predict(KalmanAxis& ax, q16_16 q);
+uint8_t kalman_axis_update(KalmanAxis& ax, q16_16 z, q16_16 r);
+
 // Flag bits of PointKalman::flags().
 enum KalmanFlag : uint8_t {
     kalman_covariance_saturated = 1,  // P hit kCovCeiling: re-initialise

@@ -42,4 +42,40 @@ int64_t mul_shr_round(int64_t a, int64_t b, int n) {
     return neg ? -m : m;
 }
 
+namespace {
+
+int bit_length(int64_t v) {  // v > 0: the n with 2^(n-1) <= v < 2^n
+    int n = 0;
+    while (v != 0) {
+        v >>= 1;
+        ++n;
+    }
+    return n;
+}
+
+}  // namespace
+
+Reciprocal reciprocal(int64_t s) {
+    const int len = bit_length(s);  // len ∈ [1, 63]
+    const uint64_t d = static_cast<uint64_t>(s);
+    // Restoring division of 2^(len-1+62) by d: rem < d < 2^63 throughout, so 2·rem < 2^64.
+    uint64_t rem = static_cast<uint64_t>(1) << (len - 1);  // 2^(len-1) <= d: first digit 0 or 1
+    uint64_t q = 0;
+    if (rem >= d) {
+        q = 1;
+        rem -= d;
+    }
+    for (int i = 0; i < 62; ++i) {
+        rem <<= 1;
+        q <<= 1;
+        if (rem >= d) {
+            rem -= d;
+            q |= 1u;
+        }
+    }
+    // q = floor(2^(len+61)/d) <= 2^62; round half up on the next bit.
+    if ((rem << 1) >= d) ++q;
+    return Reciprocal{static_cast<int64_t>(q), len};
+}
+
 }  // namespace qt

@@ -11,4 +11,20 @@ namespace qt {
 // there is no overflow for any int64 operands.
 int64_t mul_shr_round(int64_t a, int64_t b, int n);
 
+// 1/s for s > 0, as a 62-bit mantissa and an exponent:
+//   m = round_half_up(2^(len+61) / s) ∈ [2^61, 2^62],  1/s = m·2^-(len+61)·(1 ± 2^-62),
+// where s ∈ [2^(len-1), 2^len). One division by shift-and-subtract (62 steps of unsigned
+// compare and subtract; no divide instruction, none of the precision a 32-bit divisor would
+// lose), after which every ratio x/s is a 128-bit product exact to within its last bit.
+struct Reciprocal {
+    int64_t m;
+    int len;
+    // x/s with `frac` fraction bits, rounded half away: x·m·2^-(len+61-frac). Needs |x| <= 2^62
+    // (the product stays below 2^124) and len + 61 - frac >= 0.
+    int64_t ratio(int64_t x, int frac) const { return mul_shr_round(x, m, len + 61 - frac); }
+};
+
+// s > 0 and s < 2^63.
+Reciprocal reciprocal(int64_t s);
+
 }  // namespace qt
