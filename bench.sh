@@ -4,8 +4,12 @@
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
 #   lines-host     lines stage accuracy table, vote window, VGA time vs OpenCV, RAM table
 #   lines-m4       instructions per stage of the QVGA lines detector on Cortex-M4 (QEMU -icount)
+#   track-m4       instructions per line per frame of the line tracker (1KF, 2KF, 3KF, turn) on
+#                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
 #                  false detections, time (+ OpenCV's squares.cpp recipe when installed)
+#   track-host     line tracker on the paper's synthetic translations and rotations: overlap
+#                  tables for 1KF, 2KF, 3KF and the turn model, SVG charts in bench_out/track
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
 #   fpga           iCE40 UP5K and HX8K logic cells, block RAMs and Fmax (yosys + nextpnr)
 # With no NAME, runs them all.
@@ -14,7 +18,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host gradient-m4 lines-m4 hdl-latency fpga)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host gradient-m4 lines-m4 track-m4 hdl-latency fpga)
 
 host_build() {
     ensure_packages cmake make g++ catch2 iverilog
@@ -45,10 +49,15 @@ for name in "${names[@]}"; do
         quads-host)
             host_build bench_quads
             ./build/host/platform/bench_quads ;;
+        track-host)
+            host_build bench_track
+            ./build/host/platform/bench_track --out bench_out/track ;;
         gradient-m4)
             run_m4 gradient_bench ;;
         lines-m4)
             run_m4 lines_bench ;;
+        track-m4)
+            run_m4 track_bench ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;

@@ -1,6 +1,5 @@
 #include "line_tracker.h"
 
-#include "line_fit.h"
 
 namespace qt {
 
@@ -33,8 +32,7 @@ q16_16 wrap_deg(int64_t deg_raw) {
     return q16_16::from_raw(deg_raw);
 }
 
-// 1/32 px, rounded half away: the unit fit_line's moments use.
-int32_t to_32nd(q16_16 v) { return static_cast<int32_t>(shr_round_half_away(v.raw, 11)); }
+int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 
 }  // namespace
 
@@ -189,32 +187,52 @@ Segment LineTracker::line() const {
         }
     }
     if (count == 1) return polar_line(0);
-    // The points P_i = O_i + X_i in 1/32 px, relative to P_0.
-    int32_t px[3] = {0, 0, 0}, py[3] = {0, 0, 0};
+    // The points P_i = O_i + X_i (q16_16 raw) about their centroid.
+    int64_t px[3] = {0, 0, 0}, py[3] = {0, 0, 0}, sx = 0, sy = 0;
     for (int i = 0; i < count; ++i) {
-        px[i] = to_32nd(q16_16::from_raw(static_cast<int64_t>(params_.origins[i].x.raw) +
-                                         point_[i].x().raw));
-        py[i] = to_32nd(q16_16::from_raw(static_cast<int64_t>(params_.origins[i].y.raw) +
-                                         point_[i].y().raw));
+        px[i] = static_cast<int64_t>(params_.origins[i].x.raw) + point_[i].x().raw;
+        py[i] = static_cast<int64_t>(params_.origins[i].y.raw) + point_[i].y().raw;
+        sx += px[i];
+        sy += py[i];
     }
-    // The fit needs two points at least min_radius apart; otherwise the direction is unknown.
-    const int64_t rmin32 = params_.min_radius.raw >> 11;
-    int64_t spread2 = 0;
+    const int64_t mx = div_round_half_away(sx, count), my = div_round_half_away(sy, count);
+    // Scale the offsets (|d| <= 2^32 raw) by 2^-shift to below 2^29, so that the second moments
+    // stay below 3·2^58 and keep 29 bits of the spread whatever its size.
+    int64_t dx[3] = {0, 0, 0}, dy[3] = {0, 0, 0};
+    int shift = 0;
+    for (int i = 0; i < count; ++i) {
+        dx[i] = px[i] - mx;
+        dy[i] = py[i] - my;
+        while (abs64(dx[i]) >> shift >= pow2(29) || abs64(dy[i]) >> shift >= pow2(29)) ++shift;
+    }
+    int64_t cxx = 0, cyy = 0, cxy = 0, spread2 = 0;
+    for (int i = 0; i < count; ++i) {
+        dx[i] = shr_round_half_away(dx[i], shift);
+        dy[i] = shr_round_half_away(dy[i], shift);
+        cxx += dx[i] * dx[i];
+        cyy += dy[i] * dy[i];
+        cxy += dx[i] * dy[i];
+    }
     for (int i = 0; i < count; ++i)
         for (int j = i + 1; j < count; ++j) {
-            const int64_t dx = static_cast<int64_t>(px[i]) - px[j];
-            const int64_t dy = static_cast<int64_t>(py[i]) - py[j];
-            if (dx * dx + dy * dy > spread2) spread2 = dx * dx + dy * dy;
+            const int64_t ex = dx[i] - dx[j], ey = dy[i] - dy[j];
+            if (ex * ex + ey * ey > spread2) spread2 = ex * ex + ey * ey;
         }
-    if (spread2 < rmin32 * rmin32) return polar_line(far);
-    Moments m;
-    for (int i = 0; i < count; ++i) m.add(px[i] - px[0], py[i] - py[0]);
-    FittedLine fit;
-    fit_line(m, px[0], py[0], fit);
-    // fit's direction (dx, dy) has normal (−dy, dx); make_segment turns it to rho >= 0.
-    const angle_t theta = atan2_angle(fit.dx.raw, -fit.dy.raw);
+    // Points closer together than min_spread give a less certain direction than the polar line
+    // of the farthest filter (and none at all when they coincide).
+    const int64_t min_spread = params_.min_spread.raw >> shift;
+    if (spread2 < min_spread * min_spread) return polar_line(far);
+    // Principal axis: φ = ½·atan2(2·Cxy, Cxx − Cyy), minimising the squared perpendicular
+    // distances; the normal is φ + 90°.
+    int64_t a = 2 * cxy, b = cxx - cyy;
+    while (abs64(a) >= pow2(30) || abs64(b) >= pow2(30)) {
+        a = shr_round_half_away(a, 1);
+        b = shr_round_half_away(b, 1);
+    }
+    const angle_t phi = atan2_angle(static_cast<int32_t>(a), static_cast<int32_t>(b)) / 2;
+    const angle_t theta = phi + kAngleQuarterTurn;
     const SinCos n = sin_cos(theta);
-    return finish(theta, dot_normal(n, fit.mx, fit.my));
+    return finish(theta, dot_normal(n, q16_16::from_raw(mx), q16_16::from_raw(my)));
 }
 
 }  // namespace qt

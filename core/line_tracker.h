@@ -42,15 +42,18 @@ enum class LineModel : uint8_t {
 };
 
 struct TurnParams {
-    // Angle measurement variance, deg². A segment of 50 px whose ends are known to ±0.25 px
-    // has its angle known to about ±0.4°: 0.1 deg². Range [1/16, 1024].
-    q16_16 r_angle = q16_16::from_ratio(1, 10);
+    // Tuned on the experiment bench (bash bench.sh track-host, with --noise 0.5 as well): the
+    // noise-free scores hardly depend on these; with 0.5 px of end-point noise smaller process
+    // noise keeps the turn rate, whose error the lever arm to the anchor multiplies, steady.
+    // Angle measurement variance, deg². A 100 px segment whose ends are known to ±0.5 px has
+    // its angle known to about ±0.4°: 0.2 deg². Range [1/16, 1024].
+    q16_16 r_angle = q16_16::from_ratio(1, 5);
     // Random angular acceleration per frame, variance in deg²/frame⁴. Range [0, 1024].
-    q16_16 q_angle = q16_16::from_int(1);
-    // Offset measurement variance, px²: the paper's R = 0.5. Range [1/16, 1024].
-    q16_16 r_offset = q16_16::from_ratio(1, 2);
+    q16_16 q_angle = q16_16::from_ratio(1, 50);
+    // Offset measurement variance, px². Range [1/16, 1024].
+    q16_16 r_offset = q16_16::from_int(1);
     // Random jerk of the offset per frame, variance in px²/frame⁶. Range [0, 1024].
-    q16_16 q_offset = q16_16::from_ratio(1, 4);
+    q16_16 q_offset = q16_16::from_ratio(1, 100);
     // Initial variances: angle rate (deg/frame)², offset rate (px/frame)², offset
     // acceleration (px/frame²)². Nothing is known at the first sighting; σ = 10°/frame,
     // 10 px/frame and 2 px/frame² cover hand-held motion. Range [0, 16384] each.
@@ -74,6 +77,11 @@ struct LineTrackerParams {
     // closest_points: below this distance from its origin, px, a filter's point gives no
     // direction (the near-origin case).
     q16_16 min_radius = q16_16::from_int(1);
+    // closest_points, N >= 2: the least-squares line needs two points at least this far apart,
+    // px; closer, the polar line of the filter farthest from its origin is used instead. A
+    // point's position error of 0.1 px turns a fit through points 8 px apart by 0.7°, about
+    // what the polar line of a filter 8 px from its origin would be off by.
+    q16_16 min_spread = q16_16::from_int(8);
     TurnParams turn;
 };
 

@@ -8,6 +8,7 @@
 
 #include "demo.h"
 #include "detect_command.h"
+#include "track_command.h"
 
 namespace {
 
@@ -18,12 +19,18 @@ const char* kUsage =
     "  detect IMAGE [OPTIONS]\n"
     "                     find the board's lines and quadrangles in one PGM/PPM/Y4M frame and\n"
     "                     print them as JSON; options: quadtrack detect --help\n"
+    "  track SEQUENCE [OPTIONS]\n"
+    "                     detect and track the board through a Y4M file or numbered PGM files\n"
+    "                     (e.g. frames/f%03d.pgm): one JSON line per frame, each side detected\n"
+    "                     or predicted; options: quadtrack track --help\n"
     "  demo [--out DIR]   run the pipeline on the built-in synthetic board scene and write\n"
     "                     pictures under DIR (default: demo_out): input.png and input.pgm,\n"
     "                     gradient_magnitude.png (L1 |g| in grey levels, clipped at 255),\n"
     "                     gradient_direction.png (hue = direction bin, brightness = |g|),\n"
-    "                     lines.png, and board_00.png .. board_11.png: a moving board with\n"
-    "                     its lines, detected quadrangle and corners\n"
+    "                     lines.png, and board_00.png .. board_11.png: a moving board tracked\n"
+    "                     through frames where bars hide its top and bottom sides, with its\n"
+    "                     lines, detected sides (solid green), predicted sides (dashed orange)\n"
+    "                     and corners\n"
     "  --help             this text\n";
 
 }  // namespace
@@ -39,6 +46,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (command == "detect") return qt::cli::run_detect(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
+    if (command == "track") return qt::cli::run_track(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
     if (command == "demo") {
         std::string out = "demo_out";
         for (int i = 2; i < argc; ++i) {

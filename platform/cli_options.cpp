@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "board_runner.h"
+#include "quad_tracker.h"
 
 namespace qt::cli {
 
@@ -19,7 +20,14 @@ struct Option {
     const char* help;   // with unit and range
     std::function<std::string(DetectOptions)> show;  // the value in a copy of the options
     std::function<bool(const std::string&, DetectOptions&, std::string&)> set;  // parse, check, store
+    Command command = Command::detect;  // detect: every command's; track: track's only
 };
+
+// The same flag for `quadtrack track` only.
+Option track_only(Option o) {
+    o.command = Command::track;
+    return o;
+}
 
 bool parse_int(const std::string& text, long lo, long hi, long& out, std::string& error) {
     errno = 0;
@@ -68,7 +76,7 @@ std::string show_deg(angle_t a) {
     return buf;
 }
 
-// An integer flag stored in a uint16_t, uint32_t or uint64_t field.
+// An integer flag stored in a uint8_t, uint16_t, uint32_t or uint64_t field.
 template <typename T>
 Option integer(const char* name, const char* value, const char* help, long lo, long hi,
                std::function<T&(DetectOptions&)> field) {
@@ -194,26 +202,59 @@ const std::vector<Option>& table() {
          }},
         integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1, HostBoardDetector::max_quads(),
                           [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
+        // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
+        track_only({"model", "paper|turn", "line tracker per side: paper = the paper's N Kalman filters on closest points, "
+                    "turn = angle with turn rate and bent offset (line_tracker.h)",
+                    [](DetectOptions o) { return std::string(o.track.model == LineModel::turn ? "turn" : "paper"); },
+                    [](const std::string& t, DetectOptions& o, std::string& e) {
+                        if (t == "paper") o.track.model = LineModel::closest_points;
+                        else if (t == "turn") o.track.model = LineModel::turn;
+                        else {
+                            e = "'" + t + "' is not paper or turn";
+                            return false;
+                        }
+                        return true;
+                    }}),
+        track_only(integer<uint8_t>("filters", "N", "paper model: Kalman filters per line, each on its own origin, 1..3 (3 = 3KF)", 1, 3,
+                                    [](DetectOptions& o) -> uint8_t& { return o.track.filters; })),
+        track_only(degrees("gate-angle", "a detected line serves a tracked side only within this angle of its prediction, degrees, 0..90", 0, 90,
+                           [](DetectOptions& o) -> angle_t& { return o.track.gate_angle; })),
+        track_only(decimal("gate-distance", "PX", "a detected line serves a tracked side only with both ends within this distance of its prediction, pixels, 0..1000", 0, 1000,
+                           [](DetectOptions& o) -> q16_16& { return o.track.gate_distance; })),
+        track_only(integer<uint8_t>("max-predicted", "N", "a side may be predicted this many frames in a row before the track is dropped, frames, 0..255", 0, 255,
+                                    [](DetectOptions& o) -> uint8_t& { return o.track.max_predicted; })),
     };
     return options;
 }
 
-const Option* lookup(const std::string& name) {
+bool serves(const Option& o, Command command) { return o.command == Command::detect || o.command == command; }
+
+const Option* lookup(const std::string& name, Command command) {
     for (const Option& o : table())
-        if (name == o.name) return &o;
+        if (name == o.name && serves(o, command)) return &o;
     return nullptr;
 }
 
 }  // namespace
 
+TrackOptions::TrackOptions() {
+    const QuadTrackerParams d;
+    model = d.lines.model;
+    filters = d.lines.filters;
+    gate_angle = d.gate_angle;
+    gate_distance = d.gate_distance;
+    max_predicted = d.max_predicted;
+}
+
 DetectOptions::DetectOptions() {
     params.quads.display_aspect = q16_16::from_ratio(display_width, display_height);
 }
 
-bool is_option(const std::string& name) { return lookup(name) != nullptr; }
+bool is_option(const std::string& name, Command command) { return lookup(name, command) != nullptr; }
 
-bool apply_option(const std::string& name, const std::string& value, DetectOptions& options, std::string& error) {
-    const Option* o = lookup(name);
+bool apply_option(const std::string& name, const std::string& value, DetectOptions& options, std::string& error,
+                  Command command) {
+    const Option* o = lookup(name, command);
     if (o == nullptr) {
         error = "unknown option '--" + name + "'";
         return false;
@@ -226,15 +267,67 @@ bool apply_option(const std::string& name, const std::string& value, DetectOptio
     return true;
 }
 
-std::string options_help() {
+std::string options_help(Command command) {
     const DetectOptions defaults;
     std::string text;
     for (const Option& o : table()) {
+        if (!serves(o, command)) continue;
         std::string flag = std::string("  --") + o.name + " " + o.value;
         if (flag.size() < 34) flag.resize(34, ' ');
         text += flag + o.help + " (default " + o.show(defaults) + ")\n";
     }
     return text;
+}
+
+int parse_command_line(const std::vector<std::string>& args, Command command, const std::string& usage,
+                       DetectOptions& options, std::string& positional, std::FILE* out, std::FILE* err) {
+    const char* name = command == Command::detect ? "detect" : "track";
+    const char* what = command == Command::detect ? "image" : "sequence";
+    const char* what_upper = command == Command::detect ? "IMAGE" : "SEQUENCE";
+    std::string error;
+    positional.clear();
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--help" || a == "-h") {
+            std::fputs(usage.c_str(), out);
+            return 0;
+        }
+        if (a.rfind("--", 0) == 0) {
+            std::string flag = a.substr(2), value;
+            const size_t eq = flag.find('=');
+            if (eq != std::string::npos) {
+                value = flag.substr(eq + 1);
+                flag.resize(eq);
+            } else if (!is_option(flag, command)) {
+                std::fprintf(err, "quadtrack %s: unknown option '%s' (see quadtrack %s --help)\n", name, a.c_str(), name);
+                return 2;
+            } else if (i + 1 == args.size()) {
+                std::fprintf(err, "quadtrack %s: %s needs a value\n", name, a.c_str());
+                return 2;
+            } else {
+                value = args[++i];
+            }
+            if (!apply_option(flag, value, options, error, command)) {
+                std::fprintf(err, "quadtrack %s: %s\n", name, error.c_str());
+                return 2;
+            }
+            continue;
+        }
+        if (!positional.empty()) {
+            std::fprintf(err, "quadtrack %s: one %s only, got '%s' and '%s'\n", name, what, positional.c_str(), a.c_str());
+            return 2;
+        }
+        positional = a;
+    }
+    if (positional.empty()) {
+        std::fprintf(err, "quadtrack %s: no %s given (see quadtrack %s --help)\n", name, what_upper, name);
+        return 2;
+    }
+    if (options.params.quads.min_side_length > options.params.quads.max_side_length) {
+        std::fprintf(err, "quadtrack %s: --min-side is above --max-side\n", name);
+        return 2;
+    }
+    return -1;
 }
 
 }  // namespace qt::cli

@@ -18,47 +18,8 @@ std::string detect_usage() {
 int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     DetectOptions options;
     std::string path, error;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "--help" || a == "-h") {
-            std::fputs(detect_usage().c_str(), out);
-            return 0;
-        }
-        if (a.rfind("--", 0) == 0) {
-            std::string name = a.substr(2), value;
-            const size_t eq = name.find('=');
-            if (eq != std::string::npos) {
-                value = name.substr(eq + 1);
-                name.resize(eq);
-            } else if (!is_option(name)) {
-                std::fprintf(err, "quadtrack detect: unknown option '%s' (see quadtrack detect --help)\n", a.c_str());
-                return 2;
-            } else if (i + 1 == args.size()) {
-                std::fprintf(err, "quadtrack detect: %s needs a value\n", a.c_str());
-                return 2;
-            } else {
-                value = args[++i];
-            }
-            if (!apply_option(name, value, options, error)) {
-                std::fprintf(err, "quadtrack detect: %s\n", error.c_str());
-                return 2;
-            }
-            continue;
-        }
-        if (!path.empty()) {
-            std::fprintf(err, "quadtrack detect: one image only, got '%s' and '%s'\n", path.c_str(), a.c_str());
-            return 2;
-        }
-        path = a;
-    }
-    if (path.empty()) {
-        std::fputs("quadtrack detect: no IMAGE given (see quadtrack detect --help)\n", err);
-        return 2;
-    }
-    if (options.params.quads.min_side_length > options.params.quads.max_side_length) {
-        std::fputs("quadtrack detect: --min-side is above --max-side\n", err);
-        return 2;
-    }
+    const int parsed = parse_command_line(args, Command::detect, detect_usage(), options, path, out, err);
+    if (parsed >= 0) return parsed;
 
     scene::GreyImage frame;
     if (!io::read_image(path, frame, error)) {

@@ -22,9 +22,9 @@ void number(std::string& out, const char* format, double v) {
     out += buf;
 }
 
-void homography(std::string& out, const Quad& q, uint16_t w, uint16_t h) {
+void homography(std::string& out, const Point16 (&corners)[4], uint16_t w, uint16_t h) {
     DisplayHomography m;
-    if (!display_homography(q.corners, w, h, m)) {
+    if (!display_homography(corners, w, h, m)) {
         out += "null";
         return;
     }
@@ -39,11 +39,15 @@ void homography(std::string& out, const Quad& q, uint16_t w, uint16_t h) {
     out += "]]";
 }
 
-}  // namespace
+// "width":W,"height":H,"status":"..." (no braces).
+void frame_fields(std::string& out, const DetectResult& r) {
+    out += "\"width\":" + std::to_string(r.width) + ",\"height\":" + std::to_string(r.height) +
+           ",\"status\":\"" + (r.status == Status::ok ? "ok" : "capacity_exceeded") + "\"";
+}
 
-std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t display_height) {
-    std::string out = "{\"width\":" + std::to_string(r.width) + ",\"height\":" + std::to_string(r.height) +
-                      ",\"status\":\"" + (r.status == Status::ok ? "ok" : "capacity_exceeded") + "\",\"lines\":[";
+// [{"x1":..,...,"theta_deg":..}, ...]
+void lines_array(std::string& out, const DetectResult& r) {
+    out += "[";
     for (size_t i = 0; i < r.lines.size(); ++i) {
         const Segment& s = r.lines[i];
         out += i ? ",{\"x1\":" : "{\"x1\":";
@@ -60,24 +64,83 @@ std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t 
         number(out, "%.4f", s.theta / 4294967296.0 * 360.0);
         out += "}";
     }
-    out += "],\"quads\":[";
+    out += "]";
+}
+
+// [[x,y],[x,y],[x,y],[x,y]]
+void corners_array(std::string& out, const Point16 (&corners)[4]) {
+    for (int k = 0; k < 4; ++k) {
+        out += k ? ",[" : "[[";
+        px(out, corners[k].x);
+        out += ",";
+        px(out, corners[k].y);
+        out += "]";
+    }
+    out += "]";
+}
+
+const char* state_name(TrackState s) {
+    return s == TrackState::started ? "started" : s == TrackState::tracking ? "tracking" : "none";
+}
+
+const char* lost_name(uint8_t reason) {
+    switch (reason) {
+        case lost_side_unseen: return "\"side_unseen\"";
+        case lost_shape: return "\"shape\"";
+        case lost_saturated: return "\"saturated\"";
+        default: return "null";
+    }
+}
+
+}  // namespace
+
+std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t display_height) {
+    std::string out = "{";
+    frame_fields(out, r);
+    out += ",\"lines\":";
+    lines_array(out, r);
+    out += ",\"quads\":[";
     for (size_t i = 0; i < r.quads.size(); ++i) {
         const Quad& q = r.quads[i];
-        out += i ? ",{\"corners\":[" : "{\"corners\":[";
-        for (int k = 0; k < 4; ++k) {
-            out += k ? ",[" : "[";
-            px(out, q.corners[k].x);
-            out += ",";
-            px(out, q.corners[k].y);
-            out += "]";
-        }
-        out += "],\"score\":";
+        out += i ? ",{\"corners\":" : "{\"corners\":";
+        corners_array(out, q.corners);
+        out += ",\"score\":";
         number(out, "%.4f", q.score.raw / 65536.0);
         out += ",\"display_homography\":";
-        homography(out, q, display_width, display_height);
+        homography(out, q.corners, display_width, display_height);
         out += "}";
     }
     out += "]}";
+    return out;
+}
+
+std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t, uint8_t lost_reason,
+                       uint16_t display_width, uint16_t display_height) {
+    const bool has_quad = t.state != TrackState::none;
+    std::string out = "{\"frame\":" + std::to_string(frame) + ",";
+    frame_fields(out, r);
+    out += ",\"state\":\"";
+    out += state_name(t.state);
+    out += "\",\"track_id\":" + std::to_string(has_quad ? t.track_id : 0) + ",\"quad\":";
+    if (has_quad) {
+        out += "{\"corners\":";
+        corners_array(out, t.corners);
+        out += ",\"source\":[";
+        for (int i = 0; i < 4; ++i) {
+            out += i ? "," : "";
+            out += (t.detected >> i) & 1 ? "\"detected\"" : "\"predicted\"";
+        }
+        out += "],\"display_homography\":";
+        homography(out, t.corners, display_width, display_height);
+        out += "}";
+    } else {
+        out += "null";
+    }
+    out += ",\"lost\":";
+    out += lost_name(lost_reason);
+    out += ",\"lines\":";
+    lines_array(out, r);
+    out += "}";
     return out;
 }
 

@@ -6,11 +6,18 @@ message("${out}")
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "quadtrack demo exited with ${rc}")
 endif()
-# Every frame of the board sequence has its one-line summary with a quadrangle.
+# Every frame of the board sequence has its one-line summary with a (tracked) quadrangle.
 string(REGEX MATCHALL "frame +[0-9]+: [^\n]*quad [(]" found "${out}")
 list(LENGTH found frames)
 if(NOT frames EQUAL 12)
     message(FATAL_ERROR "demo found the board in ${frames} of 12 frames")
+endif()
+# The bars hide sides in some frames: at least one summary shows a predicted side (P), e.g.
+# "quad (tracking, sides D P D P)".
+string(REGEX MATCHALL "frame +[0-9]+: [^\n]*quad [(][a-z]+, sides [DP ]*P" predicted "${out}")
+list(LENGTH predicted predicted_frames)
+if(predicted_frames EQUAL 0)
+    message(FATAL_ERROR "demo shows no predicted side in any frame")
 endif()
 foreach(name input gradient_magnitude gradient_direction lines board_00 board_11)
     set(file ${OUT}/${name}.png)
