@@ -63,6 +63,15 @@ void emit(const Segment lines[4], const Point16 corners[4], uint8_t detected, Tr
 
 }  // namespace
 
+bool QuadTracker::agrees(const TrackedQuad& tracked, const Quad& detected) const {
+    // Both in detect's corner order; a detection whose corner 0 is another corner (two corners
+    // with almost the same x + y) counts as disagreeing, and restarting from it costs nothing.
+    const int64_t gate = params_.gate_distance.raw;
+    for (int i = 0; i < 4; ++i)
+        if (distance(tracked.corners[i], detected.corners[i]).raw > gate) return false;
+    return true;
+}
+
 QuadTrackerParams default_quad_tracker_params(uint16_t width, uint16_t height) {
     QuadTrackerParams p;
     p.lines = default_line_tracker_params(width, height);
@@ -148,13 +157,20 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
             }
             if (lost == 0 && !corners_of(current, params_.shape, corners)) lost = lost_shape;
             if (lost == 0) {
-                ++age_;
                 TrackedQuad out;
                 out.state = TrackState::tracking;
                 out.track_id = track_id_;
-                out.age = age_;
+                out.age = age_ + 1;
                 emit(current, corners, detected, out);
-                return out;
+                // No side found near its prediction while the detector sees a whole quadrangle
+                // elsewhere: the board moved past the gate; trust the detection. With some
+                // sides matched the track is anchored, and a disagreeing detection is more
+                // likely those sides plus an occluder's edges (the demo's bars) than the board.
+                if (detected != 0 || quad_count == 0 || agrees(out, quads[0])) {
+                    ++age_;
+                    return out;
+                }
+                lost = lost_detection_disagrees;
             }
         }
         // Lost: start again from this frame's detection, if there is one.

@@ -14,9 +14,15 @@
 //      their prediction ("predicted"). The corners are the crossings of consecutive sides.
 //   3. The track is LOST, and step() restarts from 1 in the same frame, when any side has gone
 //      unmatched for more than max_predicted frames in a row, when the four sides no longer
-//      make a convex quadrangle whose sides are within QuadParams' side lengths, or when a
-//      filter saturated. (A stated rule rather than a confidence: it bounds how long the
-//      output can be pure extrapolation, max_predicted frames.)
+//      make a convex quadrangle whose sides are within QuadParams' side lengths, when a
+//      filter saturated, or when no side matched while this frame's best detected quadrangle
+//      has a corner more than gate_distance from the tracked one (the board moved faster than
+//      the gate). A stated rule rather than a confidence: it bounds how long the output can be
+//      pure extrapolation, max_predicted frames. With some sides matched a disagreeing
+//      detection is not trusted: it is too often the matched sides plus an occluder's edges.
+//      The price: a predicted side that has drifted more than the gate from its line is not
+//      picked up again until the track is lost (the paper's constant-velocity model on a
+//      board turning 2.5°/frame, see the demo).
 //
 // Output corners follow detect's contract: anti-clockwise as seen, corner 0 with the smallest
 // x + y, side i from corner i to corner i + 1; the per-side flags follow the same order.
@@ -71,6 +77,7 @@ enum QuadTrackLost : uint8_t {
     lost_side_unseen = 1,  // a side predicted for more than max_predicted frames
     lost_shape = 2,        // no convex quadrangle with sides in range
     lost_saturated = 3,    // a filter saturated
+    lost_detection_disagrees = 4,  // no side matched, and the detection is elsewhere
 };
 
 class QuadTracker {
@@ -88,7 +95,7 @@ public:
 
 private:
     TrackedQuad start(const Segment* lines, const Quad& quad);
-    bool rebuild(TrackedQuad& out) const;
+    bool agrees(const TrackedQuad& tracked, const Quad& detected) const;
 
     QuadTrackerParams params_;
     LineTracker sides_[4];

@@ -62,6 +62,7 @@ const char* lost_text(uint8_t reason) {
     return reason == lost_side_unseen ? "side unseen too long"
            : reason == lost_shape     ? "shape"
            : reason == lost_saturated ? "filter saturated"
+           : reason == lost_detection_disagrees ? "detection elsewhere"
                                       : "";
 }
 

@@ -88,6 +88,7 @@ const char* lost_name(uint8_t reason) {
         case lost_side_unseen: return "\"side_unseen\"";
         case lost_shape: return "\"shape\"";
         case lost_saturated: return "\"saturated\"";
+        case lost_detection_disagrees: return "\"detection_disagrees\"";
         default: return "null";
     }
 }

@@ -15,7 +15,7 @@
 //    "track_id":N,
 //    "quad":{"corners":[[x,y],[x,y],[x,y],[x,y]],"source":["detected"|"predicted", x4],
 //            "display_homography":[[..],[..],[..]]}|null,
-//    "lost":null|"side_unseen"|"shape"|"saturated",
+//    "lost":null|"side_unseen"|"shape"|"saturated"|"detection_disagrees",
 //    "lines":[...as detect...]}
 // frame counts from 0 in the sequence's order; track_id is 1, 2, ... (a new one each time a track
 // starts), 0 when state is "none" (then quad is null); source[i] tells whether side i (corner i

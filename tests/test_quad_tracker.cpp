@@ -175,3 +175,25 @@ TEST_CASE("quad tracker: a side unseen too long loses the track; the next detect
     CHECK(t.track_id == 2);
     CHECK(corner_error(t, c) < 0.01);
 }
+
+TEST_CASE("quad tracker: a board that jumps past the gate is re-detected at once", "[quad_tracker]") {
+    // Moved 30 px right and 30 px down at once, every side lies beyond the 12 px gate (all
+    // predicted) while the detector sees the whole board: the detection wins in that very frame
+    // instead of max_predicted frames of extrapolation.
+    Harness h;
+    P c[4];
+    for (int k = 0; k < 8; ++k) {
+        board(k, c);
+        h.step(sides(c));
+    }
+    board(8, c);
+    for (P& p : c) {
+        p.x += 30;
+        p.y += 30;
+    }
+    const TrackedQuad t = h.step(sides(c));
+    CHECK(h.tracker.stats().lost_reason == lost_detection_disagrees);
+    CHECK(t.state == TrackState::started);
+    CHECK(t.track_id == 2);
+    CHECK(corner_error(t, c) < 0.01);
+}
