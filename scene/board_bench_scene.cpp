@@ -7,6 +7,7 @@
 
 #include "det_math.h"
 #include "prng.h"
+#include "random.h"
 
 namespace qt::scene {
 
@@ -20,8 +21,6 @@ constexpr double kMargin = 4;  // px between the board corners and the outermost
 constexpr uint64_t kStreamPose = 0xb0a4d9053u, kStreamLook = 0xb0a4d1008u, kStreamClutter = 0xb0a4dc1a7u,
                    kStreamOcclusion = 0xb0a4d0cc1u;
 
-double uniform01(Pcg32& rng) { return (rng.next() + 0.5) * (1.0 / 4294967296.0); }  // (0, 1)
-double uniform(Pcg32& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
 int uniform_int(Pcg32& rng, int lo, int hi) {  // [lo, hi], lo <= hi
     return lo + static_cast<int>(rng.below(static_cast<uint32_t>(hi - lo + 1)));
 }

@@ -6,6 +6,7 @@
 
 #include "det_math.h"
 #include "prng.h"
+#include "random.h"
 
 namespace qt::scene {
 
@@ -16,21 +17,6 @@ constexpr uint64_t kStreamSegments = 0x5e6u, kStreamAngles = 0xa9137u, kStreamNo
 
 constexpr double kQ16 = 65536.0;          // q16_16 raw units per pixel
 constexpr double kTurn = 4294967296.0;    // binary-angle units per turn
-
-double uniform01(Pcg32& rng) { return (rng.next() + 0.5) * (1.0 / 4294967296.0); }  // (0, 1)
-double uniform(Pcg32& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
-
-// Standard normal deviates, Marsaglia's polar method (one of each pair is used; simple and
-// deterministic, speed does not matter here).
-double gaussian(Pcg32& rng) {
-    double u, v, s;
-    do {
-        u = 2 * uniform01(rng) - 1;
-        v = 2 * uniform01(rng) - 1;
-        s = u * u + v * v;
-    } while (s >= 1 || s == 0);
-    return u * std::sqrt(-2 * det_log(s) / s);
-}
 
 q16_16 to_q16(double px) { return q16_16::from_raw(std::llround(px * kQ16)); }
 
@@ -155,15 +141,15 @@ std::vector<double> random_start_angles(uint64_t seed, int count) {
 double track_mean_overlap(const GtTrack& track, const LineTrackerParams& params,
                           const MotionOptions& options, uint64_t noise_stream) {
     if (track.size() < 2) throw std::invalid_argument("track_mean_overlap: fewer than 2 frames");
-    Pcg32 rng(options.seed, kStreamNoise + 2 * noise_stream);  // distinct increments per track
+    Gaussian noise(Pcg32(options.seed, kStreamNoise + 2 * noise_stream));  // a stream per track
     const double sigma = options.noise_sigma;
     auto measure = [&](const GtSegment& t) {
         if (sigma <= 0) return measured_segment(t);
         GtSegment n = t;
-        n.x1 += sigma * gaussian(rng);
-        n.y1 += sigma * gaussian(rng);
-        n.x2 += sigma * gaussian(rng);
-        n.y2 += sigma * gaussian(rng);
+        n.x1 += sigma * noise.next();
+        n.y1 += sigma * noise.next();
+        n.x2 += sigma * noise.next();
+        n.y2 += sigma * noise.next();
         return measured_segment(n);
     };
     LineTracker tracker;

@@ -7,6 +7,7 @@
 
 #include "det_math.h"
 #include "prng.h"
+#include "random.h"
 
 namespace qt::scene {
 
@@ -17,36 +18,6 @@ constexpr double kMargin = 4;  // px between generated geometry and the outermos
 // One PCG stream per purpose, so e.g. the clutter count does not change the noise field.
 constexpr uint64_t kStreamTexture = 0x7e47u, kStreamClutter = 0xc1a77u, kStreamNoise = 0x9015eu,
                    kStreamPolygons = 0x9017u, kStreamLines = 0x11e5u;
-
-double uniform01(Pcg32& rng) { return (rng.next() + 0.5) * (1.0 / 4294967296.0); }  // (0, 1)
-double uniform(Pcg32& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
-
-// Standard normal deviates by the polar form of Box-Muller (Marsaglia), in pairs.
-class Gaussian {
-public:
-    explicit Gaussian(Pcg32 rng) : rng_(rng) {}
-    double next() {
-        if (has_spare_) {
-            has_spare_ = false;
-            return spare_;
-        }
-        double u, v, s;
-        do {
-            u = 2 * uniform01(rng_) - 1;
-            v = 2 * uniform01(rng_) - 1;
-            s = u * u + v * v;
-        } while (s >= 1 || s == 0);
-        const double f = std::sqrt(-2 * det_log(s) / s);
-        spare_ = v * f;
-        has_spare_ = true;
-        return u * f;
-    }
-
-private:
-    Pcg32 rng_;
-    double spare_ = 0;
-    bool has_spare_ = false;
-};
 
 // Grey levels at least 60 from the background, kept in 10..245 so noise rarely clamps.
 uint8_t contrasting_level(Pcg32& rng, int background) {

@@ -11,6 +11,7 @@
 #include "board_scene.h"
 #include "detect_command.h"
 #include "image_io.h"
+#include "cli_run.h"
 #include "json_reader.h"
 
 using qt::test::Json;
@@ -18,29 +19,9 @@ using qt::test::JsonReader;
 
 namespace {
 
-struct Run {
-    int status;
-    std::string out, err;
-};
+using Run = qt::test::CliRun;
 
-std::string slurp(std::FILE* f) {
-    std::rewind(f);
-    std::string s;
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
-    std::fclose(f);
-    return s;
-}
-
-Run detect(const std::vector<std::string>& args) {
-    std::FILE* out = std::tmpfile();
-    std::FILE* err = std::tmpfile();
-    REQUIRE(out);
-    REQUIRE(err);
-    const int status = qt::cli::run_detect(args, out, err);
-    return {status, slurp(out), slurp(err)};
-}
+Run detect(const std::vector<std::string>& args) { return qt::test::run_cli(qt::cli::run_detect, args); }
 
 std::filesystem::path temp_dir() {
     const auto dir = std::filesystem::temp_directory_path() / "quadtrack_test_detect_cli";

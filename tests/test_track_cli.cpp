@@ -16,6 +16,7 @@
 #include "demo_sequence.h"
 #include "detect_command.h"
 #include "image_io.h"
+#include "cli_run.h"
 #include "json_reader.h"
 #include "track_command.h"
 
@@ -27,29 +28,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kFrames = 10, kFirstHidden = 4, kLastHidden = 6;
 
-struct Run {
-    int status;
-    std::string out, err;
-};
+using Run = qt::test::CliRun;
 
-std::string slurp(std::FILE* f) {
-    std::rewind(f);
-    std::string s;
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
-    std::fclose(f);
-    return s;
-}
-
-Run track(const std::vector<std::string>& args) {
-    std::FILE* out = std::tmpfile();
-    std::FILE* err = std::tmpfile();
-    REQUIRE(out);
-    REQUIRE(err);
-    const int status = qt::cli::run_track(args, out, err);
-    return {status, slurp(out), slurp(err)};
-}
+Run track(const std::vector<std::string>& args) { return qt::test::run_cli(qt::cli::run_track, args); }
 
 std::vector<Json> json_lines(const std::string& text) {
     std::vector<Json> lines;
@@ -194,7 +175,7 @@ TEST_CASE("track prints detect's lines for each frame", "[cli][track]") {
     std::FILE* out = std::tmpfile();
     std::FILE* err = std::tmpfile();
     REQUIRE(qt::cli::run_detect({(dir / "f05.pgm").string(), "--threshold=20"}, out, err) == 0);
-    const Json detect = JsonReader::parse(slurp(out));
+    const Json detect = JsonReader::parse(qt::test::slurp(out));
     std::fclose(err);
     const Json& a = frames[5]["lines"];
     const Json& b = detect["lines"];
@@ -230,7 +211,7 @@ TEST_CASE("track --help lists the tracker's options; detect does not take them",
     std::FILE* out = std::tmpfile();
     std::FILE* err = std::tmpfile();
     CHECK(qt::cli::run_detect({"board.pgm", "--model", "turn"}, out, err) == 2);
-    CHECK(slurp(err).find("unknown option '--model'") != std::string::npos);
+    CHECK(qt::test::slurp(err).find("unknown option '--model'") != std::string::npos);
     std::fclose(out);
 }
 
