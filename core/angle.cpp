@@ -16,8 +16,6 @@ constexpr int kIterations = 30;
 // Product of 1/sqrt(1 + 2^-2i) over the 30 iterations, q2_30: 0.60725293500888 · 2^30.
 constexpr int32_t kCordicGainInverse = 652032874;
 
-int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-
 }  // namespace
 
 angle_t angle_from_deg(q16_16 deg) {

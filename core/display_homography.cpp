@@ -2,12 +2,6 @@
 
 namespace qt {
 
-namespace {
-
-int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-
-}  // namespace
-
 bool display_homography(const Point16 corners[4], uint16_t display_width, uint16_t display_height,
                         DisplayHomography& out) {
     if (display_width == 0 || display_height == 0) return false;

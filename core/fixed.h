@@ -35,6 +35,12 @@ constexpr T saturate(int64_t v) {
                                  : static_cast<T>(v);
 }
 
+// |v| for v > INT64_MIN.
+constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+
+// v clamped into [lo, hi], lo <= hi.
+constexpr int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : v > hi ? hi : v; }
+
 // 2^n as a 64-bit integer, 0 <= n <= 62.
 constexpr int64_t pow2(int n) { return static_cast<int64_t>(1) << n; }
 

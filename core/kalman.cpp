@@ -28,8 +28,6 @@ static_assert((kP0Max << kToCov) <= kCeil, "P0 below the ceiling");
 static_assert(sizeof(KalmanAxis) == 32, "axis layout");
 static_assert(sizeof(PointKalman) <= 80, "RAM per filter as documented");
 
-int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : v > hi ? hi : v; }
-
 // S = a + r ∈ [2^28, 2^60 + 2^42]: the smallest is r's minimum, 2^-4 px² = 2^28 raw (never 0,
 // len >= 29); the largest stays below 2^62 (len <= 62, and the restoring division's d < 2^63).
 static_assert((kRMin << kToCov) == pow2(28) && kCeil + (kRMax << kToCov) < pow2(62),

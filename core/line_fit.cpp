@@ -2,12 +2,6 @@
 
 namespace qt {
 
-namespace {
-
-int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-
-}  // namespace
-
 bool fit_line(const Moments& m, int32_t anchor_x32, int32_t anchor_y32, FittedLine& out) {
     if (m.n <= 0) return false;
     // Central second moments (×1, in (1/32 px)²); the divisions round towards zero, an error

@@ -24,6 +24,13 @@ void closest_point(const Segment& m, SinCos n, Point16 o, q16_16& cx, q16_16& cy
     cy = scale(rho, n.sin);
 }
 
+// (|(x, y)|/2)² in q16_16 raw squared: halved so that the sum of squares of two int32 raw values
+// (each up to 2^62) cannot overflow.
+int64_t half_radius2(q16_16 x, q16_16 y) {
+    const int64_t hx = x.raw / 2, hy = y.raw / 2;
+    return hx * hx + hy * hy;
+}
+
 // Degrees in [-180, 180) for any q16_16 angle within ±540°.
 q16_16 wrap_deg(int64_t deg_raw) {
     const int64_t turn = 360 * q16_16::one_raw, half = 180 * q16_16::one_raw;
@@ -31,8 +38,6 @@ q16_16 wrap_deg(int64_t deg_raw) {
     while (deg_raw < -half) deg_raw += turn;
     return q16_16::from_raw(deg_raw);
 }
-
-int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 
 }  // namespace
 
@@ -156,12 +161,18 @@ Segment LineTracker::finish(angle_t theta, int64_t rho_raw) const {
     return s;
 }
 
+int LineTracker::farthest_filter() const {
+    int far = 0;
+    for (int i = 1; i < params_.filters; ++i)
+        if (half_radius2(point_[i].x(), point_[i].y()) > half_radius2(point_[far].x(), point_[far].y())) far = i;
+    return far;
+}
+
 Segment LineTracker::polar_line(int i) const {
     const q16_16 cx = point_[i].x(), cy = point_[i].y();
     const Point16 o = params_.origins[i];
-    const int64_t r2 = static_cast<int64_t>(cx.raw) * cx.raw + static_cast<int64_t>(cy.raw) * cy.raw;
-    const int64_t rmin = params_.min_radius.raw;
-    const angle_t theta = r2 >= rmin * rmin ? atan2_angle(cy.raw, cx.raw) : last_theta_;
+    const int64_t rmin = params_.min_radius.raw / 2;  // halved like half_radius2()
+    const angle_t theta = half_radius2(cx, cy) >= rmin * rmin ? atan2_angle(cy.raw, cx.raw) : last_theta_;
     const SinCos n = sin_cos(theta);
     const q16_16 px = q16_16::from_raw(static_cast<int64_t>(o.x.raw) + cx.raw);
     const q16_16 py = q16_16::from_raw(static_cast<int64_t>(o.y.raw) + cy.raw);
@@ -176,16 +187,6 @@ Segment LineTracker::line() const {
         return finish(theta, static_cast<int64_t>(offset_.rho().raw) + dot_normal(n, a.x, a.y));
     }
     const int count = params_.filters;
-    // The filter whose point lies farthest from its origin gives the polar fallback.
-    int far = 0;
-    int64_t far_r2 = -1;
-    for (int i = 0; i < count; ++i) {
-        const int64_t x = point_[i].x().raw, y = point_[i].y().raw;
-        if (x * x + y * y > far_r2) {
-            far_r2 = x * x + y * y;
-            far = i;
-        }
-    }
     if (count == 1) return polar_line(0);
     // The points P_i = O_i + X_i (q16_16 raw) about their centroid.
     int64_t px[3] = {0, 0, 0}, py[3] = {0, 0, 0}, sx = 0, sy = 0;
@@ -221,7 +222,7 @@ Segment LineTracker::line() const {
     // Points closer together than min_spread give a less certain direction than the polar line
     // of the farthest filter (and none at all when they coincide).
     const int64_t min_spread = params_.min_spread.raw >> shift;
-    if (spread2 < min_spread * min_spread) return polar_line(far);
+    if (spread2 < min_spread * min_spread) return polar_line(farthest_filter());
     // Principal axis: φ = ½·atan2(2·Cxy, Cxx − Cyy), minimising the squared perpendicular
     // distances; the normal is φ + 90°.
     int64_t a = 2 * cxy, b = cxx - cyy;

@@ -108,6 +108,7 @@ public:
     uint8_t flags() const;
 
 private:
+    int farthest_filter() const;  // the filter whose point lies farthest from its origin
     Segment polar_line(int i) const;
     Segment finish(angle_t theta, int64_t rho_raw) const;
 

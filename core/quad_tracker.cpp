@@ -10,8 +10,6 @@ angle_t orientation_diff(angle_t a, angle_t b) {
     return d > kAngleQuarterTurn ? kAngleHalfTurn - d : d;
 }
 
-int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-
 // The contrast polarities of two lines agree (either unknown passes). bright_side is relative
 // to each line's own normal, so it flips when the normals point opposite ways.
 bool same_polarity(const Segment& a, const Segment& b) {
@@ -70,6 +68,16 @@ bool QuadTracker::agrees(const TrackedQuad& tracked, const Quad& detected) const
     for (int i = 0; i < 4; ++i)
         if (distance(tracked.corners[i], detected.corners[i]).raw > gate) return false;
     return true;
+}
+
+const char* quad_track_lost_name(uint8_t reason) {
+    switch (reason) {
+        case lost_side_unseen: return "side_unseen";
+        case lost_shape: return "shape";
+        case lost_saturated: return "saturated";
+        case lost_detection_disagrees: return "detection_disagrees";
+        default: return nullptr;
+    }
 }
 
 QuadTrackerParams default_quad_tracker_params(uint16_t width, uint16_t height) {

@@ -80,8 +80,14 @@ enum QuadTrackLost : uint8_t {
     lost_detection_disagrees = 4,  // no side matched, and the detection is elsewhere
 };
 
+// The JSON name of a QuadTrackLost reason ("side_unseen", "shape", "saturated",
+// "detection_disagrees"), or nullptr for 0 (no track lost) and unknown values.
+const char* quad_track_lost_name(uint8_t reason);
+
 class QuadTracker {
 public:
+    // QuadTrackerParams{} has no frame size, so its filter origins all sit at (0, 0): pass
+    // default_quad_tracker_params(width, height) here or to set_params() before the first step.
     explicit QuadTracker(const QuadTrackerParams& params = QuadTrackerParams{}) : params_(params) {}
     void set_params(const QuadTrackerParams& params) { params_ = params; reset(); }
     void reset();

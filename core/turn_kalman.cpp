@@ -25,8 +25,6 @@ static_assert(sizeof(TurnKalman) <= 80, "RAM as documented");
 static_assert(pow2(60) / 4 * 25 + (kQMax << kToState) < INT64_MAX, "A P A^T fits int64");
 static_assert(kCeil + (kRMax << kToState) < pow2(62), "S range of reciprocal()");
 
-int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : v > hi ? hi : v; }
-
 int64_t mul30(int64_t a, int64_t b) { return mul_shr_round(a, b, 30); }
 
 // 1 − w²·s/d in q2_30, the Horner step of the series below.

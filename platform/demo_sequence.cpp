@@ -58,14 +58,6 @@ const char* state_text(TrackState s) {
     return s == TrackState::started ? "started" : s == TrackState::tracking ? "tracking" : "none";
 }
 
-const char* lost_text(uint8_t reason) {
-    return reason == lost_side_unseen ? "side unseen too long"
-           : reason == lost_shape     ? "shape"
-           : reason == lost_saturated ? "filter saturated"
-           : reason == lost_detection_disagrees ? "detection elsewhere"
-                                      : "";
-}
-
 // The worst distance of corners 0..3 from the truth TL, TR, BR, BL (corners 0, 3, 2, 1 in
 // detect's anti-clockwise order), px.
 double worst_corner_error(const TrackedQuad& t, const scene::BoardScene& sc) {
@@ -163,7 +155,7 @@ bool run_demo_sequence(const std::string& out_dir) {
                         px(t.corners[1].x), px(t.corners[1].y), px(t.corners[2].x), px(t.corners[2].y),
                         px(t.corners[3].x), px(t.corners[3].y), worst_corner_error(t, sc));
         }
-        if (turn.stats().lost_reason != 0) std::printf(", a track was lost: %s", lost_text(turn.stats().lost_reason));
+        if (turn.stats().lost_reason != 0) std::printf(", a track was lost: %s", quad_track_lost_name(turn.stats().lost_reason));
         if (p.state == TrackState::none) {
             std::printf("; 3KF: none");
         } else {
@@ -171,7 +163,7 @@ bool run_demo_sequence(const std::string& out_dir) {
             side_letters(p, sides);
             std::printf("; 3KF: sides %s, %.2f px", sides, worst_corner_error(p, sc));
         }
-        if (paper.stats().lost_reason != 0) std::printf(", lost: %s", lost_text(paper.stats().lost_reason));
+        if (paper.stats().lost_reason != 0) std::printf(", lost: %s", quad_track_lost_name(paper.stats().lost_reason));
         std::printf(" -> %s\n", name);
         std::string error;
         if (!io::write_png(out_dir + "/" + name, pic.width, pic.height, 3, pic.pixels, error)) {

@@ -15,6 +15,22 @@ std::string detect_usage() {
            "options (--name VALUE or --name=VALUE):\n" + options_help();
 }
 
+bool detect_frame(const scene::GreyImage& frame, const DetectOptions& options, DetectResult& result,
+                  std::string& error) {
+    if (frame.width > kMaxFrameWidth || frame.height > kMaxFrameHeight) {
+        error = std::to_string(frame.width) + " x " + std::to_string(frame.height) +
+                " is over this build's capacity of " + std::to_string(kMaxFrameWidth) + " x " +
+                std::to_string(kMaxFrameHeight);
+        return false;
+    }
+    if (!detect_board(frame, options.params, result)) {
+        error = status_name(result.status);
+        return false;
+    }
+    if (result.quads.size() > options.max_quads) result.quads.resize(options.max_quads);
+    return true;
+}
+
 int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     DetectOptions options;
     std::string path, error;
@@ -26,17 +42,11 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         std::fprintf(err, "quadtrack detect: %s\n", error.c_str());
         return 1;
     }
-    if (frame.width > kMaxFrameWidth || frame.height > kMaxFrameHeight) {
-        std::fprintf(err, "quadtrack detect: %s: %d x %d is over this build's capacity of %d x %d\n", path.c_str(),
-                     frame.width, frame.height, kMaxFrameWidth, kMaxFrameHeight);
-        return 1;
-    }
     DetectResult result;
-    if (!detect_board(frame, options.params, result)) {
-        std::fprintf(err, "quadtrack detect: %s: %s\n", path.c_str(), status_name(result.status));
+    if (!detect_frame(frame, options, result, error)) {
+        std::fprintf(err, "quadtrack detect: %s: %s\n", path.c_str(), error.c_str());
         return 1;
     }
-    if (result.quads.size() > options.max_quads) result.quads.resize(options.max_quads);
     std::fprintf(out, "%s\n", detect_json(result, options.display_width, options.display_height).c_str());
     return 0;
 }

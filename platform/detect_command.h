@@ -4,7 +4,16 @@
 #include <string>
 #include <vector>
 
+#include "board_runner.h"
+#include "cli_options.h"
+
 namespace qt::cli {
+
+// One frame through the detection chain as detect and track both run it: refuses frames over
+// the build's capacity, keeps the best options.max_quads quadrangles. On failure returns false
+// with a one-line reason (no command prefix) in `error`.
+bool detect_frame(const scene::GreyImage& frame, const DetectOptions& options, DetectResult& result,
+                  std::string& error);
 
 // args: everything after "detect". Writes the JSON (one line) to `out`, one error line to
 // `err`. Returns the exit status: 0 ok, 1 bad input file or frame, 2 bad command line.

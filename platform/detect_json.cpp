@@ -83,16 +83,6 @@ const char* state_name(TrackState s) {
     return s == TrackState::started ? "started" : s == TrackState::tracking ? "tracking" : "none";
 }
 
-const char* lost_name(uint8_t reason) {
-    switch (reason) {
-        case lost_side_unseen: return "\"side_unseen\"";
-        case lost_shape: return "\"shape\"";
-        case lost_saturated: return "\"saturated\"";
-        case lost_detection_disagrees: return "\"detection_disagrees\"";
-        default: return "null";
-    }
-}
-
 }  // namespace
 
 std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t display_height) {
@@ -138,7 +128,8 @@ std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t, u
         out += "null";
     }
     out += ",\"lost\":";
-    out += lost_name(lost_reason);
+    const char* lost = quad_track_lost_name(lost_reason);
+    out += lost ? std::string("\"") + lost + "\"" : std::string("null");
     out += ",\"lines\":";
     lines_array(out, r);
     out += "}";

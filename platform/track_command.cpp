@@ -1,7 +1,6 @@
 #include "track_command.h"
 
-#include "board_runner.h"
-#include "cli_options.h"
+#include "detect_command.h"
 #include "detect_json.h"
 #include "image_io.h"
 #include "quad_tracker.h"
@@ -62,11 +61,6 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
             return 1;
         }
         if (k == 0) {
-            if (frame.width > kMaxFrameWidth || frame.height > kMaxFrameHeight) {
-                std::fprintf(err, "quadtrack track: %s: %d x %d is over this build's capacity of %d x %d\n",
-                             spec.c_str(), frame.width, frame.height, kMaxFrameWidth, kMaxFrameHeight);
-                return 1;
-            }
             width = frame.width;
             height = frame.height;
             tracker.set_params(tracker_params(options, static_cast<uint16_t>(width), static_cast<uint16_t>(height)));
@@ -76,11 +70,10 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
             return 1;
         }
         DetectResult result;
-        if (!detect_board(frame, options.params, result)) {
-            std::fprintf(err, "quadtrack track: %s: frame %d: %s\n", spec.c_str(), k, status_name(result.status));
+        if (!detect_frame(frame, options, result, error)) {
+            std::fprintf(err, "quadtrack track: %s: frame %d: %s\n", spec.c_str(), k, error.c_str());
             return 1;
         }
-        if (result.quads.size() > options.max_quads) result.quads.resize(options.max_quads);
         const TrackedQuad t = tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
                                            result.quads.data(), static_cast<uint16_t>(result.quads.size()));
         const std::string line = track_json(k, result, t, tracker.stats().lost_reason, options.display_width,

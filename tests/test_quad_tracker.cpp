@@ -76,6 +76,13 @@ struct Harness {
                      &count, &stats);
         return tracker.step(lines.data(), static_cast<uint16_t>(lines.size()), quads, count);
     }
+    // Frames 0 .. frames − 1 of the board with every side; c is left at the last frame's corners.
+    void warm_up(int frames, P c[4]) {
+        for (int k = 0; k < frames; ++k) {
+            board(k, c);
+            step(sides(c));
+        }
+    }
 };
 
 double corner_error(const TrackedQuad& t, const P truth[4]) {
@@ -129,10 +136,7 @@ TEST_CASE("quad tracker: top and bottom sides missing for three frames are predi
 TEST_CASE("quad tracker: distractors and wrong polarity are not taken", "[quad_tracker]") {
     Harness h;
     P c[4];
-    for (int k = 0; k < 10; ++k) {
-        board(k, c);
-        h.step(sides(c));
-    }
+    h.warm_up(10, c);
     board(10, c);
     std::vector<Segment> lines = sides(c, 0x7u);  // top missing
     const P mid{(c[0].x + c[2].x) / 2, (c[0].y + c[2].y) / 2};
@@ -151,11 +155,8 @@ TEST_CASE("quad tracker: a side unseen too long loses the track; the next detect
     Harness h;
     const QuadTrackerParams params = default_quad_tracker_params(kW, kH);
     P c[4];
-    int k = 0;
-    for (; k < 5; ++k) {
-        board(k, c);
-        h.step(sides(c));
-    }
+    int k = 5;
+    h.warm_up(k, c);
     // Only the left side for max_predicted frames: still tracking; one more: lost.
     for (int i = 0; i < params.max_predicted; ++i, ++k) {
         board(k, c);
@@ -182,10 +183,7 @@ TEST_CASE("quad tracker: a board that jumps past the gate is re-detected at once
     // instead of max_predicted frames of extrapolation.
     Harness h;
     P c[4];
-    for (int k = 0; k < 8; ++k) {
-        board(k, c);
-        h.step(sides(c));
-    }
+    h.warm_up(8, c);
     board(8, c);
     for (P& p : c) {
         p.x += 30;
