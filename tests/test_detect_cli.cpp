@@ -13,6 +13,7 @@
 #include "image_io.h"
 #include "cli_run.h"
 #include "json_reader.h"
+#include "temp_dir.h"
 
 using qt::test::Json;
 using qt::test::JsonReader;
@@ -23,10 +24,10 @@ using Run = qt::test::CliRun;
 
 Run detect(const std::vector<std::string>& args) { return qt::test::run_cli(qt::cli::run_detect, args); }
 
+// This process's own directory (each test case runs as its own process under ctest -j).
 std::filesystem::path temp_dir() {
-    const auto dir = std::filesystem::temp_directory_path() / "quadtrack_test_detect_cli";
-    std::filesystem::create_directories(dir);
-    return dir;
+    static const qt::test::TempDir dir;
+    return dir.dir;
 }
 
 std::string write_file(const std::string& name, const std::string& bytes) {

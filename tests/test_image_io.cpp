@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "image_io.h"
+#include "temp_dir.h"
 
 using qt::io::FrameSource;
 using qt::io::read_image;
@@ -21,34 +22,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh directory under the system temp dir, removed with everything in it at the end.
-struct TempDir {
-    fs::path dir;
-    TempDir() {
-        std::random_device rd;
-        const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
-        dir = fs::temp_directory_path() /
-              ("qt_image_io_" + std::to_string(rd()) + "_" + std::to_string(static_cast<long long>(now)));
-        fs::create_directories(dir);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
+using qt::test::TempDir;
 
-    std::string path(const std::string& name) const { return (dir / name).string(); }
-    // Writes `bytes` to `name` and returns its path.
-    std::string file(const std::string& name, const std::string& bytes) const {
-        const std::string p = path(name);
-        std::FILE* f = std::fopen(p.c_str(), "wb");
-        REQUIRE(f != nullptr);
-        REQUIRE(std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size());
-        REQUIRE(std::fclose(f) == 0);
-        return p;
-    }
-};
 
 std::string bytes(std::initializer_list<int> values) {
     std::string s;

@@ -18,6 +18,7 @@
 #include "image_io.h"
 #include "cli_run.h"
 #include "json_reader.h"
+#include "temp_dir.h"
 #include "track_command.h"
 
 using qt::test::Json;
@@ -40,9 +41,11 @@ std::vector<Json> json_lines(const std::string& text) {
     return lines;
 }
 
-// A fresh directory per use, so test cases run in parallel do not share files.
+// A fresh directory per use under this process's own one, so test cases run in parallel (and
+// concurrent test runs) do not share files.
 std::filesystem::path temp_dir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / "quadtrack_test_track_cli" / name;
+    static const qt::test::TempDir base;
+    const auto dir = base.dir / name;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
