@@ -3,7 +3,9 @@
 #   gradient-host  core gradient throughput at 640x480, median of repeats (+ OpenCV when installed)
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
 #   lines-host     lines stage accuracy table, vote window, VGA time vs OpenCV, RAM table
-#   lines-m4       instructions per stage of the QVGA lines detector on Cortex-M4 (QEMU -icount)
+#   budgets        the whole QVGA chain on Cortex-M4 (QEMU -icount): instructions per frame and
+#                  stage on the board sequence and the cluttered frame, flash, RAM, stack
+#   budgets-m3     the same on Cortex-M3 (mps2-an385)
 #   track-m4       instructions per line per frame of the line tracker (1KF, 2KF, 3KF, turn) on
 #                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
@@ -18,7 +20,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host gradient-m4 lines-m4 track-m4 hdl-latency fpga)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host gradient-m4 budgets budgets-m3 track-m4 hdl-latency fpga)
 
 host_build() {
     ensure_packages cmake make g++ catch2 iverilog
@@ -26,15 +28,16 @@ host_build() {
     cmake --build --preset host -j"$jobs" --target "$@" >/dev/null
 }
 
-# Builds the cortex-m4 preset and runs one firmware image under QEMU with -icount shift=0
-# (one SysTick tick per 40 instructions, deterministic).
-run_m4() {
+# Builds a Cortex-M preset (cortex-m4 or cortex-m3) and runs one firmware image under QEMU with
+# -icount shift=0 (one SysTick tick per 40 instructions, deterministic).
+run_firmware() {
+    local preset=$1 machine=$2 image=$3
     ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
-    cmake --preset cortex-m4 >/dev/null
-    cmake --build --preset cortex-m4 -j"$jobs" >/dev/null
-    qemu-system-arm -M mps2-an386 -cpu cortex-m4 -nographic \
+    cmake --preset "$preset" >/dev/null
+    cmake --build --preset "$preset" -j"$jobs" >/dev/null
+    qemu-system-arm -M "$machine" -cpu "$preset" -nographic \
         -semihosting-config enable=on,target=native -icount shift=0 \
-        -kernel "build/cortex-m4/platform/cortex_m/$1.elf"
+        -kernel "build/$preset/platform/cortex_m/$image.elf"
 }
 
 for name in "${names[@]}"; do
@@ -53,11 +56,13 @@ for name in "${names[@]}"; do
             host_build bench_track
             ./build/host/platform/bench_track --out bench_out/track ;;
         gradient-m4)
-            run_m4 gradient_bench ;;
-        lines-m4)
-            run_m4 lines_bench ;;
+            run_firmware cortex-m4 mps2-an386 gradient_bench ;;
+        budgets)
+            run_firmware cortex-m4 mps2-an386 chain_bench | grep -v '^[-0-9]' ;;
+        budgets-m3)
+            run_firmware cortex-m3 mps2-an385 chain_bench | grep -v '^[-0-9]' ;;
         track-m4)
-            run_m4 track_bench ;;
+            run_firmware cortex-m4 mps2-an386 track_bench ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;

@@ -8,7 +8,7 @@ source platform/ensure_packages.sh
 ensure_packages cmake make g++ catch2 iverilog gcc-arm-none-eabi libnewlib-arm-none-eabi \
     qemu-system-arm g++-aarch64-linux-gnu qemu-user
 jobs=$(nproc)
-for preset in host host-sanitize cortex-m4 aarch64-linux; do
+for preset in host host-sanitize cortex-m4 cortex-m3 aarch64-linux; do
     echo "=== $preset"
     cmake --preset "$preset" >/dev/null
     cmake --build --preset "$preset" -j"$jobs"

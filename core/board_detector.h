@@ -41,10 +41,16 @@ public:
     // quadrangles are searched and capacity_exceeded reports a capacity that filled in either
     // stage (the results are valid, the stats say what was cut).
     Status finish() {
-        const Status l = lines_.finish();
+        return finish([](FinishStage) {});
+    }
+    // The same, calling mark(stage) as each stage ends (line_detector.h's FinishStage).
+    template <class Mark>
+    Status finish(Mark&& mark) {
+        const Status l = lines_.finish(mark);
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
         const Status q = detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(), params_.quads, pairs_,
                                       PairCapacity, quads_, MaxQuads, &quad_count_, &quad_stats_);
+        mark(FinishStage::quads);
         if (q != Status::ok && q != Status::capacity_exceeded) return q;
         return l == Status::ok && q == Status::ok ? Status::ok : Status::capacity_exceeded;
     }

@@ -24,6 +24,10 @@ struct LineParams {
     CornerParams corners;
 };
 
+// The stages of finish(), in order: PPHT; clustering and corner joining; the quadrangle rules
+// (board_detector.h). finish(mark) calls mark(stage) as each ends, so a caller can time them.
+enum class FinishStage : uint8_t { hough, cluster, quads };
+
 struct LineStats {
     uint32_t edges = 0;           // edge points kept
     uint32_t edges_dropped = 0;   // edge points lost to the edge capacity
@@ -75,17 +79,24 @@ public:
     // capacity_exceeded when edges, segments or clusters were dropped or PPHT ran out of its
     // walk budget (the lines found are valid; stats() says what was cut).
     Status finish() {
+        return finish([](FinishStage) {});
+    }
+    // The same, calling mark(stage) as each stage ends (for timing them).
+    template <class Mark>
+    Status finish(Mark&& mark) {
         if (edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
             return Status::not_in_frame;
         stats_.edges = edges_view_.size();
         stats_.edges_dropped = edges_view_.dropped();
         const Status h = hough_segments(edges_view_, width_, height_, params_.hough, hough_.view(),
                                         segments_, MaxSegments, &segment_count_, &stats_.hough);
+        mark(FinishStage::hough);
         if (h != Status::ok) return h;
         const Status c = cluster_segments(segments_, segment_count_, params_.cluster, scratch_,
                                           lines_, MaxLines, &line_count_, &stats_.cluster);
         if (c != Status::ok) return c;
         stats_.cluster.ends_joined = join_corners(lines_, line_count_, params_.corners, corners_);
+        mark(FinishStage::cluster);
         const bool cut_short = stats_.edges_dropped > 0 || stats_.hough.segments_dropped > 0 ||
                                stats_.hough.budget_exhausted || stats_.cluster.clusters_dropped > 0;
         return cut_short ? Status::capacity_exceeded : Status::ok;

@@ -80,6 +80,15 @@ const char* quad_track_lost_name(uint8_t reason) {
     }
 }
 
+const char* track_state_name(TrackState state) {
+    switch (state) {
+        case TrackState::started: return "started";
+        case TrackState::tracking: return "tracking";
+        case TrackState::none: break;
+    }
+    return "none";
+}
+
 QuadTrackerParams default_quad_tracker_params(uint16_t width, uint16_t height) {
     QuadTrackerParams p;
     p.lines = default_line_tracker_params(width, height);

@@ -59,6 +59,9 @@ enum class TrackState : uint8_t {
     tracking,  // carried by the trackers (see TrackedQuad::detected for which sides were seen)
 };
 
+// "none", "started" or "tracking": the name the JSON and the result text use.
+const char* track_state_name(TrackState state);
+
 struct TrackedQuad {
     TrackState state = TrackState::none;
     Point16 corners[4] = {};  // px, detect's order (see the top of the file)

@@ -1,6 +1,6 @@
 // qt_vectors: writes or checks the golden vectors of the gradient block, the Verilog include
-// generated from the gradient-word definition, and the lines stage's test frames with their
-// expected lines.
+// generated from the gradient-word definition, and the whole chain's test frames with
+// their expected results.
 //   qt_vectors --write ROOT            regenerate ROOT/vectors/gradient/, ROOT/vectors/scenes/ and
 //                                      ROOT/hdl/gradient_word.vh
 //   qt_vectors --check ROOT            exit 1 unless every committed file equals a fresh generation
@@ -14,7 +14,7 @@
 
 #include "gradient_cases.h"
 #include "gradient_model.h"
-#include "scene_cases.h"
+#include "chain_cases.h"
 
 namespace {
 
@@ -36,9 +36,10 @@ Files generate() {
         manifest += format_manifest_line(e);
     }
     files["vectors/gradient/manifest.txt"] = manifest;
-    for (const SceneCase& c : scene_cases()) {
-        files["vectors/scenes/" + c.name + ".pgm"] = format_pgm(c.frame);
-        files["vectors/scenes/" + c.name + ".lines.txt"] = lines_text(c);
+    for (const ChainCase& c : chain_cases()) {
+        for (size_t k = 0; k < c.frames.size(); ++k)
+            files["vectors/scenes/" + frame_name(c, k) + ".pgm"] = format_pgm(c.frames[k]);
+        files["vectors/scenes/" + c.name + ".chain.txt"] = chain_text(c);
     }
     files["hdl/gradient_word.vh"] = verilog_header();
     return files;

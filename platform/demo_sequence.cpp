@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "board_runner.h"
+#include "board_sequence.h"
 #include "overlay.h"
 #include "png_writer.h"
 #include "quad_tracker.h"
@@ -11,32 +12,6 @@
 namespace qt::cli {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-// Bars: every pixel within this distance of the side's line, across the whole frame, px. Their
-// edges lie this far from the hidden side, well outside the tracker's 12 px gate, so the bars'
-// own edges are not taken for the side.
-constexpr double kBarHalfWidth = 24;
-constexpr int kBarLevel = 24;  // grey level (plus the rendered noise's low bits)
-
-// Frame f: the default board turned by (f − 6)·2.5° about its centre and moved by
-// (6f − 33, 2f − 11) px, corners in 1/256 px.
-scene::BoardScene frame_scene(int f) {
-    scene::BoardScene s = scene::default_board_scene();
-    double cx = 0, cy = 0;
-    for (const auto& c : s.corners) {
-        cx += c.x / 256.0 / 4;
-        cy += c.y / 256.0 / 4;
-    }
-    const double a = (f - 6) * 2.5 * kPi / 180, ca = std::cos(a), sa = std::sin(a);
-    for (auto& c : s.corners) {
-        const double x = c.x / 256.0 - cx, y = c.y / 256.0 - cy;
-        c.x = static_cast<int32_t>(std::lround((cx + x * ca - y * sa + 6.0 * f - 33) * 256));
-        c.y = static_cast<int32_t>(std::lround((cy + x * sa + y * ca + 2.0 * f - 11) * 256));
-    }
-    s.seed = 100 + static_cast<uint64_t>(f);
-    return s;
-}
 
 double px(q16_16 v) { return v.raw / 65536.0; }
 
@@ -52,10 +27,6 @@ void side_line(io::RgbImage& pic, Point16 a, Point16 b, io::Rgb colour, bool das
         for (double o : {-0.5, 0.5})
             pic.line(x1 + ux * t - uy * o, y1 + uy * t + ux * o, x1 + ux * e - uy * o, y1 + uy * e + ux * o, colour);
     }
-}
-
-const char* state_text(TrackState s) {
-    return s == TrackState::started ? "started" : s == TrackState::tracking ? "tracking" : "none";
 }
 
 // The worst distance of corners 0..3 from the truth TL, TR, BR, BL (corners 0, 3, 2, 1 in
@@ -80,27 +51,6 @@ void side_letters(const TrackedQuad& t, char (&text)[8]) {
 
 }  // namespace
 
-void draw_bar(scene::GreyImage& img, scene::SubPixel a, scene::SubPixel b) {
-    const double ax = a.x / 256.0, ay = a.y / 256.0, dx = b.x / 256.0 - ax, dy = b.y / 256.0 - ay;
-    const double len = std::hypot(dx, dy);
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x)
-            if (std::fabs((x - ax) * dy - (y - ay) * dx) / len <= kBarHalfWidth)
-                img.at(x, y) = static_cast<uint8_t>(kBarLevel + (img.at(x, y) & 7));
-}
-
-DemoFrame demo_frame(int f) {
-    DemoFrame d;
-    d.scene = frame_scene(f);
-    d.image = scene::render_board(d.scene);
-    d.hidden = f >= kDemoFirstHidden && f <= kDemoLastHidden;
-    if (d.hidden) {
-        draw_bar(d.image, d.scene.corners[0], d.scene.corners[1]);  // top
-        draw_bar(d.image, d.scene.corners[2], d.scene.corners[3]);  // bottom
-    }
-    return d;
-}
-
 bool run_demo_sequence(const std::string& out_dir) {
     std::printf("board sequence: %d frames 640x480, the board turning 2.5 deg and moving 6.3 px a frame; in frames "
                 "%d-%d dark bars hide its top and bottom sides.\n"
@@ -109,15 +59,15 @@ bool run_demo_sequence(const std::string& out_dir) {
                 "  pictures: lines (red), detected sides (solid green), predicted sides (dashed orange), corners "
                 "(yellow rings, the first cyan), the truth's corners (magenta dots)\n"
                 "  sides: D detected, P predicted, in corner order (left, bottom, right, top)\n",
-                kDemoFrames, kDemoFirstHidden, kDemoLastHidden);
+                scene::kBoardSequenceFrames, scene::kFirstHiddenFrame, scene::kLastHiddenFrame);
     const BoardParams params;
     QuadTrackerParams tp = default_quad_tracker_params(640, 480);
     tp.shape = params.quads;
     QuadTracker paper(tp);
     tp.lines.model = LineModel::turn;
     QuadTracker turn(tp);
-    for (int f = 0; f < kDemoFrames; ++f) {
-        const DemoFrame d = demo_frame(f);
+    for (int f = 0; f < scene::kBoardSequenceFrames; ++f) {
+        const scene::BoardSequenceFrame d = scene::board_sequence_frame(f);
         const scene::BoardScene& sc = d.scene;
         DetectResult r;
         if (!detect_board(d.image, params, r)) {
@@ -151,7 +101,7 @@ bool run_demo_sequence(const std::string& out_dir) {
             side_letters(t, sides);
             std::printf("quad (%s, sides %s) track %u, corners (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f), "
                         "worst corner error %.2f px",
-                        state_text(t.state), sides, t.track_id, px(t.corners[0].x), px(t.corners[0].y),
+                        track_state_name(t.state), sides, t.track_id, px(t.corners[0].x), px(t.corners[0].y),
                         px(t.corners[1].x), px(t.corners[1].y), px(t.corners[2].x), px(t.corners[2].y),
                         px(t.corners[3].x), px(t.corners[3].y), worst_corner_error(t, sc));
         }

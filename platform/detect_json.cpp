@@ -79,10 +79,6 @@ void corners_array(std::string& out, const Point16 (&corners)[4]) {
     out += "]";
 }
 
-const char* state_name(TrackState s) {
-    return s == TrackState::started ? "started" : s == TrackState::tracking ? "tracking" : "none";
-}
-
 }  // namespace
 
 std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t display_height) {
@@ -111,7 +107,7 @@ std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t, u
     std::string out = "{\"frame\":" + std::to_string(frame) + ",";
     frame_fields(out, r);
     out += ",\"state\":\"";
-    out += state_name(t.state);
+    out += track_state_name(t.state);
     out += "\",\"track_id\":" + std::to_string(has_quad ? t.track_id : 0) + ",\"quad\":";
     if (has_quad) {
         out += "{\"corners\":";

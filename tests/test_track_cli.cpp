@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "board_scene.h"
-#include "demo_sequence.h"
+#include "board_sequence.h"
 #include "detect_command.h"
 #include "image_io.h"
 #include "cli_run.h"
@@ -26,7 +26,6 @@ using qt::test::JsonReader;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kFrames = 10, kFirstHidden = 4, kLastHidden = 6;
 
 using Run = qt::test::CliRun;
@@ -62,27 +61,18 @@ void write(const std::filesystem::path& path, const qt::scene::GreyImage& img) {
 std::string write_sequence(const std::filesystem::path& dir, std::vector<std::array<double, 8>>& truth) {
     truth.clear();
     for (int f = 0; f < kFrames; ++f) {
-        qt::scene::BoardScene s = qt::scene::default_board_scene();
-        double cx = 0, cy = 0;
-        for (const auto& c : s.corners) {
-            cx += c.x / 256.0 / 4;
-            cy += c.y / 256.0 / 4;
-        }
-        const double a = (f - 5) * 0.5 * kPi / 180, ca = std::cos(a), sa = std::sin(a);
+        qt::scene::BoardScene s =
+            qt::scene::turned_board(qt::scene::default_board_scene(), (f - 5) * 0.5, 5.0 * f - 22, 2.0 * f - 9);
         std::array<double, 8> t{};
         for (int i = 0; i < 4; ++i) {
-            auto& c = s.corners[i];
-            const double x = c.x / 256.0 - cx, y = c.y / 256.0 - cy;
-            c.x = static_cast<int32_t>(std::lround((cx + x * ca - y * sa + 5.0 * f - 22) * 256));
-            c.y = static_cast<int32_t>(std::lround((cy + x * sa + y * ca + 2.0 * f - 9) * 256));
-            t[2 * i] = c.x / 256.0;
-            t[2 * i + 1] = c.y / 256.0;
+            t[2 * i] = s.corners[i].x / 256.0;
+            t[2 * i + 1] = s.corners[i].y / 256.0;
         }
         s.seed = 500 + static_cast<uint64_t>(f);
         qt::scene::GreyImage img = qt::scene::render_board(s);
         if (f >= kFirstHidden && f <= kLastHidden) {
-            qt::cli::draw_bar(img, s.corners[0], s.corners[1]);  // top
-            qt::cli::draw_bar(img, s.corners[2], s.corners[3]);  // bottom
+            qt::scene::draw_bar(img, s.corners[0], s.corners[1]);  // top
+            qt::scene::draw_bar(img, s.corners[2], s.corners[3]);  // bottom
         }
         char name[32];
         std::snprintf(name, sizeof name, "f%02d.pgm", f);

@@ -1,0 +1,65 @@
+#include "chain_cases.h"
+
+#include <cstdio>
+
+#include "board_detector.h"
+#include "board_sequence.h"
+#include "line_scene.h"
+#include "quad_tracker.h"
+#include "result_text.h"
+
+namespace qt::vec {
+
+std::vector<ChainCase> chain_cases() {
+    std::vector<ChainCase> cases;
+    {   // The demo's moving board at half size, frames 2..9: bars hide the top and bottom sides
+        // in the fourth to sixth.
+        ChainCase c{"board_motion_qvga", {}};
+        for (int f = 2; f <= 9; ++f) c.frames.push_back(scene::board_sequence_frame(f, 2).image);
+        cases.push_back(c);
+    }
+    {   // Three shapes over blobs and texture, blurred and noisy: a cluttered frame.
+        scene::SceneOptions o;
+        o.noise_sigma = 5;
+        o.blur_sigma = 0.8;
+        o.clutter_blobs = 25;
+        o.clutter_texture = 20;
+        o.seed = 31;
+        cases.push_back({"clutter_qvga", {scene::random_polygon_scene(o, 3, 30, 60).render()}});
+    }
+    return cases;
+}
+
+std::string frame_name(const ChainCase& c, size_t k) {
+    char suffix[24];
+    std::snprintf(suffix, sizeof suffix, "_%02zu", k);
+    return c.name + suffix;
+}
+
+std::string format_pgm(const scene::GreyImage& img) {
+    std::string s = "P5\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n255\n";
+    s.append(img.pixels.begin(), img.pixels.end());
+    return s;
+}
+
+std::string chain_text(const ChainCase& c) {
+    static BoardDetectorQvga det;
+    const BoardParams params;
+    QuadTracker tracker(default_quad_tracker_params(320, 240));
+    std::string text;
+    for (size_t k = 0; k < c.frames.size(); ++k) {
+        const scene::GreyImage& frame = c.frames[k];
+        if (det.begin_frame(static_cast<uint16_t>(frame.width), static_cast<uint16_t>(frame.height), params) !=
+            Status::ok)
+            return text + "error: frame does not fit BoardDetectorQvga\n";
+        for (int y = 0; y < frame.height; ++y) det.push_row(frame.row(y), static_cast<uint16_t>(frame.width));
+        const Status status = det.finish();
+        const TrackedQuad track =
+            tracker.step(det.lines().lines(), det.lines().line_count(), det.quads(), det.quad_count());
+        write_frame_text(frame_name(c, k).c_str(), det, status, track, tracker.stats().lost_reason,
+                         [&](const char* line, size_t length) { text.append(line, length); });
+    }
+    return text;
+}
+
+}  // namespace qt::vec

@@ -1,0 +1,29 @@
+// Committed QVGA frame sequences of the whole quadrangle chain (vectors/scenes/) and the result
+// text (core/result_text.h) the host's core computes for them: the firmware must print the same
+// text byte for byte.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "image.h"
+
+namespace qt::vec {
+
+struct ChainCase {
+    std::string name;                   // frames are vectors/scenes/<name>_<NN>.pgm
+    std::vector<scene::GreyImage> frames;  // 320 × 240
+};
+
+std::vector<ChainCase> chain_cases();
+
+// Name of frame k of a case: <name>_<NN>, two digits.
+std::string frame_name(const ChainCase& c, size_t k);
+
+// Binary PGM (P5, maxval 255) of a frame.
+std::string format_pgm(const scene::GreyImage& img);
+
+// The result text of a case's frames in order through one BoardDetectorQvga and one
+// QuadTracker (default parameters for 320 × 240), as the firmware runs them.
+std::string chain_text(const ChainCase& c);
+
+}  // namespace qt::vec
