@@ -23,7 +23,9 @@ template <class Lines, uint16_t PairCapacity, uint16_t MaxQuads>
 class BoardDetector {
 public:
     static constexpr uint32_t ram_bytes() { return sizeof(BoardDetector); }
-    static constexpr uint32_t quad_bytes() { return sizeof(LinePair) * PairCapacity + sizeof(Quad) * MaxQuads; }
+    static constexpr uint32_t quad_bytes() {
+        return sizeof(LinePair) * PairCapacity + sizeof(SinCos) * Lines::max_lines() + sizeof(Quad) * MaxQuads;
+    }
     static constexpr uint16_t max_quads() { return MaxQuads; }
 
     Status begin_frame(uint16_t width, uint16_t height, const BoardParams& params) {
@@ -49,7 +51,7 @@ public:
         const Status l = lines_.finish(mark);
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
         const Status q = detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(), params_.quads, pairs_,
-                                      PairCapacity, quads_, MaxQuads, &quad_count_, &quad_stats_);
+                                      PairCapacity, normals_, quads_, MaxQuads, &quad_count_, &quad_stats_);
         mark(FinishStage::quads);
         if (q != Status::ok && q != Status::capacity_exceeded) return q;
         return l == Status::ok && q == Status::ok ? Status::ok : Status::capacity_exceeded;
@@ -63,6 +65,7 @@ public:
 private:
     Lines lines_;
     LinePair pairs_[PairCapacity] = {};
+    SinCos normals_[Lines::max_lines()] = {};
     Quad quads_[MaxQuads] = {};
     BoardParams params_;
     QuadStats quad_stats_;

@@ -43,11 +43,13 @@ class LineDetector {
 public:
     // Bytes of RAM one detector occupies (all of it static when the object is).
     static constexpr uint32_t ram_bytes() { return sizeof(LineDetector); }
+    static constexpr uint16_t max_lines() { return MaxLines; }
 
     Status begin_frame(uint16_t width, uint16_t height, const LineParams& params) {
         params_ = params;
         stats_ = LineStats{};
         segment_count_ = line_count_ = 0;
+        width_ = height_ = 0;  // until the frame has begun: finish() then says not_in_frame
         if (height > MaxHeight) return Status::bad_size;
         edges_view_ = edges_.view();
         gradient_.kernel.edge_threshold = params.edge_threshold;

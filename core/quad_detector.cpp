@@ -19,10 +19,10 @@ int64_t perimeter(const Quad& q) {
 
 // Length of side a -> b (on lines[on]) covered by the lines lying along it: `on` itself and
 // every line with both ends within collinear_distance of it; at most the side's length.
-int64_t side_support(Point16 a, Point16 b, const Segment* lines, uint16_t n, uint8_t on, int64_t side_length,
-                     const QuadParams& p) {
+int64_t side_support(Point16 a, Point16 b, const Segment* lines, const SinCos* normals, uint16_t n, uint8_t on,
+                     int64_t side_length, const QuadParams& p) {
     const Segment& l = lines[on];
-    const SinCos nl = sin_cos(l.theta);
+    const SinCos nl = normals[on];
     auto off_line = [&](q16_16 x, q16_16 y) {  // pixels, q16_16
         const int64_t d = signed_distance(l, nl, x.raw, y.raw);
         return d < 0 ? -d : d;
@@ -58,12 +58,14 @@ bool ranks_before(const Quad& a, int64_t perim_a, const Quad& b, int64_t perim_b
 
 // Corners of the candidate with opposite pairs (p1, p2) and (q1, q2), put in the canonical
 // order of quad_rules.h. False when two lines do not cross or the shape is not convex.
-bool build_candidate(const Segment* lines, LinePair p, LinePair q, Quad& out) {
+bool build_candidate(const Segment* lines, const SinCos* normals, LinePair p, LinePair q, Quad& out) {
     // Going round: p1 ∩ q1, q1 ∩ p2, p2 ∩ q2, q2 ∩ p1; side i runs from corner i to i + 1.
     const uint8_t side_line[4] = {q.a, p.b, q.b, p.a};
     Point16 c[4];
-    for (int i = 0; i < 4; ++i)
-        if (!intersect_lines(lines[side_line[(i + 3) & 3]], lines[side_line[i]], c[i])) return false;
+    for (int i = 0; i < 4; ++i) {
+        const uint8_t before = side_line[(i + 3) & 3], after = side_line[i];
+        if (!intersect_lines(lines[before], normals[before], lines[after], normals[after], c[i])) return false;
+    }
     if (!is_convex(c)) return false;
 
     // Anti-clockwise as seen (negative shoelace in y-down); reversing the corner order
@@ -91,7 +93,7 @@ bool build_candidate(const Segment* lines, LinePair p, LinePair q, Quad& out) {
 }  // namespace
 
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity, Quad* out,
+                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity, SinCos* normals, Quad* out,
                     uint16_t capacity, uint16_t* count, QuadStats* stats) {
     *count = 0;
     *stats = QuadStats{};
@@ -102,8 +104,9 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
     // ~1/sin(55°) times their separation; half is a safe prefilter, rule 4 decides later.
     uint16_t npairs = 0;
     const int64_t min_sep = params.min_side_length.raw / 2, max_sep = params.max_side_length.raw;
+    for (uint16_t i = 0; i < n; ++i) normals[i] = sin_cos(lines[i].theta);
     for (uint16_t i = 0; i < n; ++i) {
-        const SinCos normal = sin_cos(lines[i].theta);
+        const SinCos normal = normals[i];
         for (uint16_t j = static_cast<uint16_t>(i + 1); j < n; ++j) {
             if (!rule_parallel(lines[i].theta, lines[j].theta, params)) continue;
             const int64_t sep = separation(lines[i], normal, lines[j]);
@@ -130,13 +133,15 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
                 continue;
             }
             Quad cand;
-            if (!build_candidate(lines, p, q, cand)) {
+            if (!build_candidate(lines, normals, p, q, cand)) {
                 ++stats->rejected_shape;
                 continue;
             }
             const Segment* side_lines[4] = {&lines[cand.lines[0]], &lines[cand.lines[1]], &lines[cand.lines[2]],
                                             &lines[cand.lines[3]]};
-            if (!rule_contrast(cand.corners, side_lines, params)) {
+            const SinCos side_normals[4] = {normals[cand.lines[0]], normals[cand.lines[1]], normals[cand.lines[2]],
+                                            normals[cand.lines[3]]};
+            if (!rule_contrast(cand.corners, side_lines, side_normals, params)) {
                 ++stats->rejected_contrast;
                 continue;
             }
@@ -159,8 +164,8 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             int64_t covered = 0, perim = 0;
             bool supported = true;
             for (int k = 0; k < 4; ++k) {
-                const int64_t o = side_support(cand.corners[k], cand.corners[(k + 1) & 3], lines, n, cand.lines[k],
-                                               sides[k].raw, params);
+                const int64_t o = side_support(cand.corners[k], cand.corners[(k + 1) & 3], lines, normals, n,
+                                               cand.lines[k], sides[k].raw, params);
                 if (o * 65536 < static_cast<int64_t>(sides[k].raw) * params.min_side_coverage.raw) supported = false;
                 covered += o;
                 perim += sides[k].raw;

@@ -50,11 +50,12 @@ struct LinePair {
 // Finds quadrangles among lines[0 .. n) (n <= 255) in a width × height frame. Writes the best
 // `capacity` distinct candidates (two whose corners all lie within collinear_distance of each
 // other are one quadrangle, reported once), highest score first (ties: larger perimeter first, then lower line
-// indices), to out[0 .. *count). `pairs` is scratch for pair_capacity parallel pairs.
+// indices), to out[0 .. *count). `pairs` is scratch for pair_capacity parallel pairs, `normals`
+// for n line normals.
 // Returns bad_size for n > 255 or a zero frame size, capacity_exceeded when parallel pairs
 // were dropped (the quads found are still valid and written), ok otherwise.
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity, Quad* out,
+                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity, SinCos* normals, Quad* out,
                     uint16_t capacity, uint16_t* count, QuadStats* stats);
 
 }  // namespace qt

@@ -59,7 +59,8 @@ int64_t signed_distance(const Segment& line, SinCos n, int64_t x, int64_t y) {
     return shr_round_half_away(x * n.cos.raw + y * n.sin.raw, 30) - wide(line.rho);
 }
 
-bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], const QuadParams& p) {
+bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], const SinCos normals[4],
+                   const QuadParams& p) {
     if (p.contrast == Contrast::any) return true;
     int64_t mx = 0, my = 0;  // the centroid, q16_16; |corner| <= 16384 px keeps it below 2^30
     for (int i = 0; i < 4; ++i) {
@@ -72,7 +73,7 @@ bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], cons
         const Segment& s = *sides[i];
         if (s.bright_side == 0) continue;
         // The centroid of a convex quadrangle with sides >= 1 px is never on a side's line.
-        const bool interior_along_normal = signed_distance(s, sin_cos(s.theta), mx, my) > 0;
+        const bool interior_along_normal = signed_distance(s, normals[i], mx, my) > 0;
         const bool interior_bright = interior_along_normal == (s.bright_side > 0);
         if (interior_bright != (p.contrast == Contrast::bright_board)) return false;
     }
@@ -80,11 +81,14 @@ bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], cons
 }
 
 bool intersect_lines(const Segment& a, const Segment& b, Point16& out) {
+    return intersect_lines(a, sin_cos(a.theta), b, sin_cos(b.theta), out);
+}
+
+bool intersect_lines(const Segment& a, SinCos na, const Segment& b, SinCos nb, Point16& out) {
     // Normals n = (cos θ, sin θ) in q2_30; the lines are n·p = rho. Cramer's rule:
     //   det = ca·sb − sa·cb (q4_60 -> q2_30), x = (ra·sb − rb·sa) / det, y = (ca·rb − cb·ra) / det.
     // |rho| < 2^15 px (2^31 raw) times |sin| <= 2^30: each product below 2^61, the difference
     // below 2^62.
-    const SinCos na = sin_cos(a.theta), nb = sin_cos(b.theta);
     const int64_t det = shr_round_half_away(static_cast<int64_t>(na.cos.raw) * nb.sin.raw -
                                                 static_cast<int64_t>(na.sin.raw) * nb.cos.raw,
                                             30);  // q2_30

@@ -74,10 +74,11 @@ bool rule_side_lengths(const q16_16 sides[4], const QuadParams& p);
 // display_aspect · aspect_tolerance].
 bool rule_aspect(const q16_16 sides[4], const QuadParams& p);
 
-// Contrast: with corners in any order and side i on line sides[i], each line's bright_side
-// puts the quadrangle's interior (its corners' mean) on the side p.contrast asks for. Lines of
-// unknown polarity (bright_side 0) pass.
-bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], const QuadParams& p);
+// Contrast: with corners in any order and side i on line sides[i] (normal sin_cos(theta) in
+// normals[i]), each line's bright_side puts the quadrangle's interior (its corners' mean) on
+// the side p.contrast asks for. Lines of unknown polarity (bright_side 0) pass.
+bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], const SinCos normals[4],
+                   const QuadParams& p);
 
 // Signed distance of the point (x, y) (q16_16 raw, |x|, |y| <= 16384 px) from `line`, whose
 // normal `normal` = sin_cos(line.theta) the caller computes once: n·p − rho, pixels, q16_16
@@ -87,6 +88,9 @@ int64_t signed_distance(const Segment& line, SinCos normal, int64_t x, int64_t y
 // Where two lines (rho, theta of their normals) cross, pixels. False when they are closer to
 // parallel than ~0.06° (|sin| < 2^-10) or the crossing lies beyond ±16384 px.
 bool intersect_lines(const Segment& a, const Segment& b, Point16& out);
+// The same with the normals sin_cos(a.theta) and sin_cos(b.theta) already computed (a CORDIC
+// costs some 300 instructions on a Cortex-M4; detect_quads() computes each line's once).
+bool intersect_lines(const Segment& a, SinCos na, const Segment& b, SinCos nb, Point16& out);
 
 // Length of the segment from a to b, pixels, rounded down to 2^-16 px.
 q16_16 distance(Point16 a, Point16 b);

@@ -171,6 +171,13 @@ TEST_CASE("limits are reported: segment capacity, walk budget, bad parameters", 
     REQUIRE(g_det.finish() == Status::bad_size);
     REQUIRE(g_det.begin_frame(321, 240, LineParams{}) == Status::bad_size);
     REQUIRE(g_det.begin_frame(320, 241, LineParams{}) == Status::bad_size);
+
+    // A refused frame leaves nothing to finish, not the previous frame's edges again.
+    REQUIRE(detect(img, LineParams{}) == Status::ok);
+    REQUIRE(g_det.begin_frame(320, 241, LineParams{}) == Status::bad_size);
+    REQUIRE(g_det.finish() == Status::not_in_frame);
+    REQUIRE(g_det.begin_frame(321, 240, LineParams{}) == Status::bad_size);
+    REQUIRE(g_det.finish() == Status::not_in_frame);
 }
 
 TEST_CASE("the QVGA lines stage fits 48 KiB of RAM", "[hough]") {

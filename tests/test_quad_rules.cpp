@@ -28,11 +28,12 @@ struct Found {
 Found find(const std::vector<Segment>& lines, uint16_t w, uint16_t h, const QuadParams& p = QuadParams{},
            uint16_t pair_capacity = 64, uint16_t capacity = 4) {
     std::vector<LinePair> pairs(pair_capacity);
+    std::vector<SinCos> normals(lines.size() + 1);
     std::vector<Quad> out(capacity);
     uint16_t count = 0;
     Found f;
     f.status = detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), w, h, p, pairs.data(),
-                            pair_capacity, out.data(), capacity, &count, &f.stats);
+                            pair_capacity, normals.data(), out.data(), capacity, &count, &f.stats);
     f.quads.assign(out.begin(), out.begin() + count);
     return f;
 }
@@ -258,10 +259,11 @@ TEST_CASE("degenerate line sets give no quadrangle and no error", "[quad]") {
     const Segment s = segment(10, 10, 100, 10);
     CHECK(find({s, s, s, s}, 320, 240).quads.empty());
     std::vector<LinePair> pairs(4);
+    SinCos normals[1];
     Quad out[1];
     uint16_t count = 7;
     QuadStats stats;
-    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, out, 1, &count, &stats) == Status::bad_size);
+    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, normals, out, 1, &count, &stats) == Status::bad_size);
     CHECK(count == 0);
 }
 

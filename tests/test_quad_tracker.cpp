@@ -69,10 +69,11 @@ struct Harness {
     QuadTracker tracker{default_quad_tracker_params(kW, kH)};
     TrackedQuad step(const std::vector<Segment>& lines) {
         LinePair pairs[64];
+        std::vector<SinCos> normals(lines.size() + 1);
         Quad quads[4];
         uint16_t count = 0;
         QuadStats stats;
-        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), kW, kH, QuadParams{}, pairs, 64, quads, 4,
+        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), kW, kH, QuadParams{}, pairs, 64, normals.data(), quads, 4,
                      &count, &stats);
         return tracker.step(lines.data(), static_cast<uint16_t>(lines.size()), quads, count);
     }
