@@ -12,6 +12,9 @@
 // frame and stage, the worst frame of each case, flash, RAM and stack. Exit status 0 unless a
 // frame could not be run or the PGM parser failed its checks.
 //
+// A "work" line per frame gives what the stages worked on: edge points, points that voted in
+// PPHT, votes cast, bins followed, segments, parallel pairs, pair combinations tried.
+//
 // Instructions come from SysTick ticks, 40 instructions each under -icount shift=0
 // (cycle_counter.h); a reading is quantised to 40 and includes one ticks_now() call. Stages:
 //   rows     the frame's push_row calls, each timed: gradient, non-maximum suppression and
@@ -123,8 +126,14 @@ alignas(4) uint8_t g_line[kWidth];  // the camera's line buffer
 enum Stage : unsigned { kRows, kHough, kCluster, kQuads, kTrack, kStages };
 constexpr const char* kStageNames[kStages] = {"rows", "hough", "cluster", "quads", "track"};
 
+// What the stages worked on, for reading the instruction counts.
+enum Work : unsigned { kEdges, kVoters, kVotes, kFollowed, kSegments, kPairs, kCombinations, kWorks };
+constexpr const char* kWorkNames[kWorks] = {"edges",    "voters", "votes",       "followed",
+                                            "segments", "pairs",  "combinations"};
+
 struct Instructions {
     uint64_t stage[kStages] = {};
+    uint32_t work[kWorks] = {};
     uint64_t total() const {
         uint64_t t = 0;
         for (uint64_t s : stage) t += s;
@@ -187,6 +196,14 @@ const char* run_frame(const ChainFrame& frame, bool& frame_open, Instructions& n
 
     qt::write_frame_text(frame.name, g_det, status, track, g_tracker.stats().lost_reason,
                          [](const char* text, size_t) { sh_write(text); });
+    const qt::LineStats& ls = g_det.lines().stats();
+    n.work[kEdges] = ls.edges;
+    n.work[kVoters] = ls.hough.points_visited;
+    n.work[kVotes] = ls.hough.votes;
+    n.work[kFollowed] = ls.hough.lines_followed;
+    n.work[kSegments] = g_det.lines().segment_count();
+    n.work[kPairs] = g_det.quad_stats().parallel_pairs;
+    n.work[kCombinations] = g_det.quad_stats().combinations;
     return nullptr;
 }
 
@@ -232,6 +249,10 @@ int main() {
         sh_write("\n");
         for (unsigned f = 0; f < chain.count; ++f) {
             print_instructions(chain.frames[f].name, per_frame[f]);
+            sh_write("work ");
+            sh_write(chain.frames[f].name);
+            for (unsigned w = 0; w < kWorks; ++w) print_field(kWorkNames[w], per_frame[f].work[w]);
+            sh_write("\n");
             for (unsigned s = 0; s < kStages; ++s)
                 if (per_frame[f].stage[s] > worst[c].stage[s]) worst[c].stage[s] = per_frame[f].stage[s];
         }
