@@ -42,24 +42,31 @@ std::string format_pgm(const scene::GreyImage& img) {
     return s;
 }
 
-std::string chain_text(const ChainCase& c) {
+std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases) {
     static BoardDetectorQvga det;
     const BoardParams params;
     QuadTracker tracker(default_quad_tracker_params(320, 240));
-    std::string text;
-    for (size_t k = 0; k < c.frames.size(); ++k) {
-        const scene::GreyImage& frame = c.frames[k];
-        if (det.begin_frame(static_cast<uint16_t>(frame.width), static_cast<uint16_t>(frame.height), params) !=
-            Status::ok)
-            return text + "error: frame does not fit BoardDetectorQvga\n";
-        for (int y = 0; y < frame.height; ++y) det.push_row(frame.row(y), static_cast<uint16_t>(frame.width));
-        const Status status = det.finish();
-        const TrackedQuad track =
-            tracker.step(det.lines().lines(), det.lines().line_count(), det.quads(), det.quad_count());
-        write_frame_text(frame_name(c, k).c_str(), det, status, track, tracker.stats().lost_reason,
-                         [&](const char* line, size_t length) { text.append(line, length); });
+    std::vector<std::string> texts;
+    for (const ChainCase& c : cases) {
+        tracker.reset();
+        std::string text;
+        for (size_t k = 0; k < c.frames.size(); ++k) {
+            const scene::GreyImage& frame = c.frames[k];
+            if (det.begin_frame(static_cast<uint16_t>(frame.width), static_cast<uint16_t>(frame.height), params) !=
+                Status::ok) {
+                text += "error: frame does not fit BoardDetectorQvga\n";
+                break;
+            }
+            for (int y = 0; y < frame.height; ++y) det.push_row(frame.row(y), static_cast<uint16_t>(frame.width));
+            const Status status = det.finish();
+            const TrackedQuad track =
+                tracker.step(det.lines().lines(), det.lines().line_count(), det.quads(), det.quad_count());
+            write_frame_text(frame_name(c, k).c_str(), det, status, track, tracker.stats().lost_reason,
+                             [&](const char* line, size_t length) { text.append(line, length); });
+        }
+        texts.push_back(text);
     }
-    return text;
+    return texts;
 }
 
 }  // namespace qt::vec

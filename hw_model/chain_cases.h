@@ -22,8 +22,9 @@ std::string frame_name(const ChainCase& c, size_t k);
 // Binary PGM (P5, maxval 255) of a frame.
 std::string format_pgm(const scene::GreyImage& img);
 
-// The result text of a case's frames in order through one BoardDetectorQvga and one
-// QuadTracker (default parameters for 320 × 240), as the firmware runs them.
-std::string chain_text(const ChainCase& c);
+// The result text of each case, the cases in order and each case's frames in order through
+// one BoardDetectorQvga and one QuadTracker (default parameters for 320 × 240), reset() at the
+// start of each case (so track ids run on from case to case), as the firmware runs them.
+std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases);
 
 }  // namespace qt::vec

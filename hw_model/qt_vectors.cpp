@@ -36,10 +36,13 @@ Files generate() {
         manifest += format_manifest_line(e);
     }
     files["vectors/gradient/manifest.txt"] = manifest;
-    for (const ChainCase& c : chain_cases()) {
+    const std::vector<ChainCase> cases = chain_cases();
+    const std::vector<std::string> texts = chain_texts(cases);
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const ChainCase& c = cases[i];
         for (size_t k = 0; k < c.frames.size(); ++k)
             files["vectors/scenes/" + frame_name(c, k) + ".pgm"] = format_pgm(c.frames[k]);
-        files["vectors/scenes/" + c.name + ".chain.txt"] = chain_text(c);
+        files["vectors/scenes/" + c.name + ".chain.txt"] = texts[i];
     }
     files["hdl/gradient_word.vh"] = verilog_header();
     return files;

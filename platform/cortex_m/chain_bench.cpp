@@ -27,8 +27,6 @@
 #include <stdint.h>
 #include <string.h>
 
-#include <new>
-
 #include "board_detector.h"
 #include "cycle_counter.h"
 #include "pgm_view.h"
@@ -93,18 +91,12 @@ constexpr PgmCheck kPgmChecks[] = {
     {"", false},
 };
 
-size_t text_length(const char* s) {
-    size_t n = 0;
-    while (s[n] != 0) ++n;
-    return n;
-}
-
 // Runs kPgmChecks; prints each failure. Returns the number that failed.
 unsigned check_pgm_parser() {
     unsigned failed = 0;
     for (const PgmCheck& c : kPgmChecks) {
         const uint8_t* p = reinterpret_cast<const uint8_t*>(c.text);
-        const Pgm pgm = parse_pgm(p, p + text_length(c.text), kWidth, kHeight);
+        const Pgm pgm = parse_pgm(p, p + strlen(c.text), kWidth, kHeight);
         if ((pgm.error == nullptr) != c.accept) {
             ++failed;
             sh_write("pgm parser FAIL: ");
@@ -148,9 +140,11 @@ void print_field(const char* name, uint64_t value) {
     sh_dec(value);
 }
 
-void print_instructions(const char* label, const Instructions& n) {
+// "budget <prefix><name> rows=... total=..."
+void print_instructions(const char* prefix, const char* name, const Instructions& n) {
     sh_write("budget ");
-    sh_write(label);
+    sh_write(prefix);
+    sh_write(name);
     for (unsigned s = 0; s < kStages; ++s) print_field(kStageNames[s], n.stage[s]);
     print_field("total", n.total());
     sh_write("\n");
@@ -219,16 +213,14 @@ int main() {
     sh_dec(kChecks);
     sh_write(" header checks as expected\n");
 
+    g_tracker.set_params(qt::default_quad_tracker_params(kWidth, kHeight));
     unsigned failures = 0;
     bool frame_open = false;
     Instructions worst[sizeof kChainCases / sizeof kChainCases[0]];
     Instructions per_frame[kMaxCaseFrames];
     for (unsigned c = 0; c < sizeof kChainCases / sizeof kChainCases[0]; ++c) {
         const ChainCase& chain = kChainCases[c];
-        // A fresh tracker per case, track ids from 1 as in the host's text; built in place,
-        // as an assignment would put a 2 KB temporary on the stack.
-        g_tracker.~QuadTracker();
-        new (&g_tracker) qt::QuadTracker(qt::default_quad_tracker_params(kWidth, kHeight));
+        g_tracker.reset();  // as the host's chain_texts(): track ids run on across cases
         sh_write("=== chain ");
         sh_write(chain.name);
         sh_write("\n");
@@ -248,7 +240,7 @@ int main() {
         sh_write(chain.name);
         sh_write("\n");
         for (unsigned f = 0; f < chain.count; ++f) {
-            print_instructions(chain.frames[f].name, per_frame[f]);
+            print_instructions("", chain.frames[f].name, per_frame[f]);
             sh_write("work ");
             sh_write(chain.frames[f].name);
             for (unsigned w = 0; w < kWorks; ++w) print_field(kWorkNames[w], per_frame[f].work[w]);
@@ -261,11 +253,7 @@ int main() {
     // Worst frame of each case, stage by stage (the stages' worst frames may differ).
     uint64_t worst_total = 0;
     for (unsigned c = 0; c < sizeof kChainCases / sizeof kChainCases[0]; ++c) {
-        char label[64] = "worst ";
-        size_t i = 6;
-        for (const char* p = kChainCases[c].name; *p != 0 && i + 1 < sizeof label; ++p) label[i++] = *p;
-        label[i] = 0;
-        print_instructions(label, worst[c]);
+        print_instructions("worst ", kChainCases[c].name, worst[c]);
         if (worst[c].total() > worst_total) worst_total = worst[c].total();
     }
 
