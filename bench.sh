@@ -10,6 +10,9 @@
 #                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
 #                  false detections, time (+ OpenCV's squares.cpp recipe when installed)
+#   homography-host  RANSAC homography on generated inter-frame pairs (200 pairs, 0-50 % outliers):
+#                  corner error, inliers, iterations, time (+ OpenCV findHomography RANSAC/RHO
+#                  when libopencv-calib3d-dev is installed)
 #   track-host     line tracker on the paper's synthetic translations and rotations: overlap
 #                  tables for 1KF, 2KF, 3KF and the turn model, SVG charts in bench_out/track
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
@@ -20,7 +23,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host gradient-m4 budgets budgets-m3 track-m4 hdl-latency fpga)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host homography-host gradient-m4 budgets budgets-m3 track-m4 hdl-latency fpga)
 
 host_build() {
     ensure_packages cmake make g++ catch2 iverilog
@@ -55,6 +58,9 @@ for name in "${names[@]}"; do
         track-host)
             host_build bench_track
             ./build/host/platform/bench_track --out bench_out/track ;;
+        homography-host)
+            host_build bench_homography
+            ./build/host/platform/bench_homography ;;
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench ;;
         budgets)

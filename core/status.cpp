@@ -10,6 +10,7 @@ const char* status_name(Status s) {
         case Status::not_in_frame: return "no frame in progress";
         case Status::previous_frame_incomplete: return "previous frame ended early";
         case Status::capacity_exceeded: return "capacity exceeded (results incomplete)";
+        case Status::bad_row_order: return "rows out of order";
     }
     return "unknown status";
 }

@@ -14,6 +14,8 @@ enum class Status : uint8_t {
                                 // the new frame has started normally
     capacity_exceeded,          // a compile-time capacity filled: results are valid but
                                 // incomplete; the stage's stats count what was dropped
+    bad_row_order,              // a row arrived out of the order the stage needs (harris.h:
+                                // a gradient row before its pixel row, or too far behind it)
 };
 
 // Short English name for logs and CLI messages.

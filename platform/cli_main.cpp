@@ -8,6 +8,8 @@
 
 #include "demo.h"
 #include "detect_command.h"
+#include "homography_command.h"
+#include "target_command.h"
 #include "track_command.h"
 
 namespace {
@@ -23,6 +25,13 @@ const char* kUsage =
     "                     detect and track the board through a Y4M file or numbered PGM files\n"
     "                     (e.g. frames/f%03d.pgm): one JSON line per frame, each side detected\n"
     "                     or predicted; options: quadtrack track --help\n"
+    "  homography A B [OPTIONS]\n"
+    "                     the homography mapping image A's pixels into image B (Harris corners,\n"
+    "                     NCC matches, RANSAC) as JSON; options: quadtrack homography --help\n"
+    "  target SEQUENCE --roi X,Y,W,H [OPTIONS]\n"
+    "                     track the target in frame 0's box through the sequence, also while it\n"
+    "                     is hidden or out of view (Kalman filter + accumulated homographies):\n"
+    "                     one JSON line per frame; options: quadtrack target --help\n"
     "  demo [--out DIR]   run the pipeline on the built-in synthetic board scene and write\n"
     "                     pictures under DIR (default: demo_out): input.png and input.pgm,\n"
     "                     gradient_magnitude.png (L1 |g| in grey levels, clipped at 255),\n"
@@ -47,6 +56,8 @@ int main(int argc, char** argv) {
     }
     if (command == "detect") return qt::cli::run_detect(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
     if (command == "track") return qt::cli::run_track(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
+    if (command == "homography") return qt::cli::run_homography(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
+    if (command == "target") return qt::cli::run_target(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
     if (command == "demo") {
         std::string out = "demo_out";
         for (int i = 2; i < argc; ++i) {

@@ -1,13 +1,12 @@
 #include "cli_options.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <vector>
 
 #include "board_runner.h"
+#include "parse_number.h"
 #include "quad_tracker.h"
 
 namespace qt::cli {
@@ -29,37 +28,10 @@ Option track_only(Option o) {
     return o;
 }
 
-bool parse_int(const std::string& text, long lo, long hi, long& out, std::string& error) {
-    errno = 0;
-    char* end = nullptr;
-    const long v = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno != 0) {
-        error = "'" + text + "' is not an integer";
-        return false;
-    }
-    if (v < lo || v > hi) {
-        error = text + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi);
-        return false;
-    }
-    out = v;
-    return true;
-}
-
 // A decimal number into q16_16 (rounded to nearest 2^-16) within [lo, hi].
 bool parse_q16(const std::string& text, double lo, double hi, q16_16& out, std::string& error) {
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v)) {
-        error = "'" + text + "' is not a number";
-        return false;
-    }
-    if (v < lo || v > hi) {
-        char range[64];
-        std::snprintf(range, sizeof range, "%g..%g", lo, hi);
-        error = text + " is out of range " + range;
-        return false;
-    }
+    double v = 0;
+    if (!parse_double(text, lo, hi, v, error)) return false;
     out = q16_16::from_raw(std::llround(v * 65536.0));
     return true;
 }

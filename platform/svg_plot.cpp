@@ -60,8 +60,8 @@ std::string render(const LinePlot& p) {
     const double x0 = p.x.front(), x1 = p.x.size() > 1 ? p.x.back() : p.x.front() + 1;
     const double xlo = p.x.size() > 1 ? x0 : x0 - 1;
     auto sx = [&](double x) { return kLeft + (x - xlo) / (x1 - xlo) * (kRight - kLeft); };
-    auto sy = [&](double pct) {
-        return kBottom - std::min(100.0, std::max(0.0, pct)) / 100 * (kBottom - kTop);
+    auto sy = [&](double v) {
+        return kBottom - std::min(p.y_max, std::max(0.0, v)) / p.y_max * (kBottom - kTop);
     };
     std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(kWidth) +
@@ -69,11 +69,18 @@ std::string render(const LinePlot& p) {
                     num(kHeight) + "\" font-family=\"sans-serif\">\n";
     s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     s += text(kWidth / 2, 24, p.title, "middle", 16);
-    // y ticks and grid every 20 %.
-    for (int pct = 0; pct <= 100; pct += 20) {
-        s += line(kLeft, sy(pct), kRight, sy(pct), "#dddddd", 1);
-        s += line(kLeft - 5, sy(pct), kLeft, sy(pct), "black", 1);
-        s += text(kLeft - 8, sy(pct) + 4, std::to_string(pct), "end", 12);
+    for (const PlotSpan& span : p.spans) {
+        const double a = std::max(kLeft, sx(span.x0)), b = std::min(kRight, sx(span.x1));
+        s += "<rect x=\"" + num(a) + "\" y=\"" + num(kTop) + "\" width=\"" + num(std::max(0.0, b - a)) +
+             "\" height=\"" + num(kBottom - kTop) + "\" fill=\"#eeeeee\"/>\n";
+        s += text((a + b) / 2, kTop + 14, span.label, "middle", 11);
+    }
+    // y ticks and grid every fifth of the axis.
+    for (int k = 0; k <= 5; ++k) {
+        const double v = p.y_max * k / 5;
+        s += line(kLeft, sy(v), kRight, sy(v), "#dddddd", 1);
+        s += line(kLeft - 5, sy(v), kLeft, sy(v), "black", 1);
+        s += text(kLeft - 8, sy(v) + 4, tick_text(v), "end", 12);
     }
     // x ticks.
     std::vector<PlotTick> ticks = p.ticks;
@@ -99,7 +106,7 @@ std::string render(const LinePlot& p) {
             pts += (k ? " " : "") + num(sx(p.x[k])) + "," + num(sy(ser.y[k]));
         s += "<polyline fill=\"none\" stroke=\"" + std::string(colour) +
              "\" stroke-width=\"2\" points=\"" + pts + "\"/>\n";
-        for (std::size_t k = 0; k < p.x.size(); ++k)
+        for (std::size_t k = 0; p.markers && k < p.x.size(); ++k)
             s += "<circle cx=\"" + num(sx(p.x[k])) + "\" cy=\"" + num(sy(ser.y[k])) +
                  "\" r=\"2.5\" fill=\"" + colour + "\"/>\n";
         const double ly = kTop + 10 + 22 * static_cast<double>(i);
@@ -113,6 +120,10 @@ std::string render(const LinePlot& p) {
 }  // namespace
 
 bool write_svg_line_plot(const std::string& path, const LinePlot& plot, std::string& error) {
+    if (!(plot.y_max > 0)) {
+        error = path + ": plot y_max is not positive";
+        return false;
+    }
     if (plot.x.empty()) {
         error = path + ": plot has no x values";
         return false;
