@@ -15,6 +15,9 @@
 #                  when libopencv-calib3d-dev is installed)
 #   track-host     line tracker on the paper's synthetic translations and rotations: overlap
 #                  tables for 1KF, 2KF, 3KF and the turn model, SVG charts in bench_out/track
+#   target-host    the filtering-geometry paper's comparison on generated airborne sequences:
+#                  template only, filter only, homography only, fused (with and without Table
+#                  III's reset); error tables and SVG charts in bench_out/target
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
 #   fpga           iCE40 UP5K and HX8K logic cells, block RAMs and Fmax (yosys + nextpnr)
 # With no NAME, runs them all.
@@ -23,7 +26,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host homography-host gradient-m4 budgets budgets-m3 track-m4 hdl-latency fpga)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host homography-host target-host gradient-m4 budgets budgets-m3 track-m4 hdl-latency fpga)
 
 host_build() {
     ensure_packages cmake make g++ catch2 iverilog
@@ -69,6 +72,9 @@ for name in "${names[@]}"; do
             run_firmware cortex-m3 mps2-an385 chain_bench 2>&1 | grep -E '^(budget|work|chain:|FAIL)' ;;
         track-m4)
             run_firmware cortex-m4 mps2-an386 track_bench ;;
+        target-host)
+            host_build bench_target
+            ./build/host/platform/bench_target --out bench_out/target ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;

@@ -11,11 +11,12 @@ struct Feature {
     static constexpr int kRadius = PatchRadius;
     static constexpr int kSide = 2 * PatchRadius + 1;  // patch side, px
 
+    int64_t response = 0;        // 25·det(M) - trace(M)² (Harris with k = 1/25 = 0.04, times 25),
+                                 // M the structure tensor summed over the window, grey levels^4
+                                 // (first: no padding before the 8-byte member)
     int32_t x_q8 = 0, y_q8 = 0;  // position, 1/256 px, pixel centres at integers; sub-pixel
                                  // from a parabola through the response at x-1, x, x+1 (and y)
     int16_t px = 0, py = 0;      // the pixel the patch is centred on (the response maximum)
-    int64_t response = 0;        // 25·det(M) - trace(M)² (Harris with k = 1/25 = 0.04, times 25),
-                                 // M the structure tensor summed over the window, grey levels^4
     uint8_t patch[static_cast<unsigned>(kSide * kSide)] = {};  // grey levels, row-major, rows py-R..py+R, columns px-R..px+R
 };
 

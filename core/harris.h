@@ -30,10 +30,10 @@
 //   column sums of gx², gx·gy, gy²            12·W          3840
 //   responses of the last 3 rows              24·W          7680
 //   pixels of the last R+V+4 rows             (R+V+4)·W     3200 at R 4
-//   kept corners with their patches           F·sizeof(Feature<R>)   96·112 = 10752
+//   kept corners with their patches           F·sizeof(Feature<R>)   96·104 = 9984
 //   per-cell counts                           F             96
-// sizeof(HarrisDetector<320, 96, 4, 2>) = 32 016 bytes on x86-64 and Cortex-M (the output
-// FeatureSet<4, 96> is another 10 760).
+// sizeof(HarrisDetector<320, 96, 4, 2>) = 31 256 bytes on x86-64 and Cortex-M. The corners are
+// sorted in place and read with features(): no second copy is needed for the frame.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -124,7 +124,7 @@ public:
         const uint32_t cells = uint32_t{config_.grid_cols} * config_.grid_rows;
         for (uint32_t c = 0; c < cells; ++c)
             for (uint32_t k = 0; k < cell_count_[c]; ++k) {
-                Feature<PatchRadius>& f = kept_[c * config_.per_cell + k];
+                Feature<PatchRadius>& f = kept_.items[c * config_.per_cell + k];
                 const int dy = y - f.py;
                 if (dy >= -PatchRadius && dy <= PatchRadius) copy_patch_row(f, dy);
             }
@@ -150,31 +150,62 @@ public:
         return Status::ok;
     }
 
-    // After every row: the kept corners, strongest first, into `out` (count <= MaxFeatures).
-    // not_in_frame (out.count = 0) when no frame is in progress or rows are missing; the frame
-    // ends either way.
-    Status finish(FeatureSet<PatchRadius, MaxFeatures>& out) {
-        out.count = 0;
-        out.width = width_;
-        out.height = height_;
+    // After every row: the kept corners, strongest first, in features() (count <= MaxFeatures),
+    // sorted in place. not_in_frame (count 0) when no frame is in progress or rows are missing;
+    // the frame ends either way.
+    Status finish() {
+        kept_.width = width_;
+        kept_.height = height_;
         const bool complete = in_frame_ && pixel_rows_ == height_ && gradient_rows_ == height_;
         in_frame_ = false;
+        kept_.count = 0;
         if (!complete) return Status::not_in_frame;
-        // Insertion sort of slot indices by strength (at most MaxFeatures of them).
-        uint16_t order[MaxFeatures];
+        // The used slots packed to the front (a slot's index is never below its new one) ...
         uint16_t n = 0;
         const uint32_t cells = uint32_t{config_.grid_cols} * config_.grid_rows;
         for (uint32_t c = 0; c < cells; ++c)
-            for (uint32_t k = 0; k < cell_count_[c]; ++k) {
-                const uint16_t slot = static_cast<uint16_t>(c * config_.per_cell + k);
-                uint16_t i = n++;
-                for (; i > 0 && stronger(kept_[slot], kept_[order[i - 1]]); --i) order[i] = order[i - 1];
-                order[i] = slot;
+            for (uint32_t k = 0; k < cell_count_[c]; ++k, ++n) {
+                const uint32_t slot = c * config_.per_cell + k;
+                if (slot != n) kept_.items[n] = kept_.items[slot];
             }
-        for (uint16_t i = 0; i < n; ++i) out.items[i] = kept_[order[i]];
-        out.count = n;
+        // ... an insertion sort of their indices by strength ...
+        uint16_t order[MaxFeatures];
+        for (uint16_t k = 0; k < n; ++k) {
+            uint16_t i = k;
+            for (; i > 0 && stronger(kept_.items[k], kept_.items[order[i - 1]]); --i) order[i] = order[i - 1];
+            order[i] = k;
+        }
+        // ... then items[i] = old items[order[i]] in place, cycle by cycle, one corner of
+        // scratch (order[i] = MaxFeatures marks a placed entry).
+        for (uint16_t i = 0; i < n; ++i) {
+            if (order[i] == MaxFeatures || order[i] == i) continue;
+            const Feature<PatchRadius> first = kept_.items[i];
+            uint16_t at = i;
+            while (order[at] != i) {
+                const uint16_t from = order[at];
+                kept_.items[at] = kept_.items[from];
+                order[at] = MaxFeatures;
+                at = from;
+            }
+            kept_.items[at] = first;
+            order[at] = MaxFeatures;
+        }
+        kept_.count = n;
         return Status::ok;
     }
+
+    // The same, copied into `out`.
+    Status finish(FeatureSet<PatchRadius, MaxFeatures>& out) {
+        const Status s = finish();
+        out.width = kept_.width;
+        out.height = kept_.height;
+        out.count = kept_.count;
+        for (uint16_t i = 0; i < kept_.count; ++i) out.items[i] = kept_.items[i];
+        return s;
+    }
+
+    // The last finished frame's corners (valid until the next begin_frame()).
+    const FeatureSet<PatchRadius, MaxFeatures>& features() const { return kept_; }
 
     const HarrisStats& stats() const { return stats_; }
     bool in_frame() const { return in_frame_; }
@@ -267,7 +298,7 @@ private:
         const uint32_t cx = static_cast<uint32_t>(f.px) * config_.grid_cols / width_;
         const uint32_t cy = static_cast<uint32_t>(f.py) * config_.grid_rows / height_;
         const uint32_t cell = cy * config_.grid_cols + cx;
-        Feature<PatchRadius>* slots = kept_ + cell * config_.per_cell;
+        Feature<PatchRadius>* slots = kept_.items + cell * config_.per_cell;
         uint8_t& count = cell_count_[cell];
         Feature<PatchRadius>* target;
         if (count < config_.per_cell) {
@@ -299,7 +330,8 @@ private:
     int32_t col_xx_[MaxWidth] = {}, col_xy_[MaxWidth] = {}, col_yy_[MaxWidth] = {};
     int64_t resp_[3][MaxWidth] = {};
     uint8_t pixels_[static_cast<unsigned>(kPixelRows)][MaxWidth] = {};
-    Feature<PatchRadius> kept_[MaxFeatures];  // cell c owns slots [c·per_cell, (c+1)·per_cell)
+    // During a frame cell c owns items[c·per_cell, (c+1)·per_cell); finish() sorts them.
+    FeatureSet<PatchRadius, MaxFeatures> kept_;
     uint8_t cell_count_[MaxFeatures] = {};    // cells <= slots <= MaxFeatures
     HarrisConfig config_;
     HarrisStats stats_;

@@ -25,12 +25,13 @@ struct TargetPipelineConfig {
     HarrisConfig harris;
     FrameHomographyConfig geometry;
     TargetTrackerParams tracker;
-    uint16_t capture_margin_px = 12;  // region kept beyond the expected search window, px
-    // The template is cut again at the match when a measurement is accepted with an NCC of
-    // at least this (Q15; 0.75 = 24576), so it follows the target's slow change of look
-    // (scale, rotation); above 32767: never. template_only refreshes at every match, as the
-    // paper's template tracker does (its Fig. 8).
-    int32_t refresh_score_q15 = 24576;
+    uint16_t capture_margin_px = 8;   // region kept beyond the expected search window, px
+    // The template is cut again at the match when a measurement is accepted with an NCC
+    // below this (Q15; 0.85 = 27853): it follows the target's slow change of look (scale,
+    // rotation, the ground moving behind it) without being re-cut every frame, which would
+    // let the sub-pixel errors of successive cuts add up to a drift. 0: never. template_only
+    // refreshes at every match, as the paper's template tracker does (its Fig. 8).
+    int32_t refresh_score_q15 = 27853;
 };
 
 // What one frame gave.
@@ -44,8 +45,8 @@ struct TargetFrame {
     TemplateHit hit;             // the best match there
 };
 
-template <uint16_t MaxWidth, uint16_t MaxFeatures = 96, int PatchRadius = 4, uint8_t MaxTemplate = 24,
-          uint16_t MaxRegion = 104>
+template <uint16_t MaxWidth, uint16_t MaxFeatures = 96, int PatchRadius = 4, uint8_t MaxTemplate = 16,
+          uint16_t MaxRegion = 84>
 class TargetPipeline {
 public:
     using Features = FeatureSet<PatchRadius, MaxFeatures>;
@@ -67,7 +68,7 @@ public:
     }
 
     Status begin_frame(uint16_t width, uint16_t height) {
-        if (have_previous_ && (width != prev().width || height != prev().height)) {
+        if (have_previous_ && (width != prev_.width || height != prev_.height)) {
             // Another size: the previous frame's corners cannot be matched; the track goes on
             // without a homography this frame.
             have_previous_ = false;
@@ -117,9 +118,9 @@ public:
     Status finish(TargetFrame& out) {
         out = TargetFrame{};
         if (y_ != height_ || width_ == 0) return Status::not_in_frame;
-        Features& cur = features_[current_];
-        const Status hs = harris_.finish(cur);
+        const Status hs = harris_.finish();
         if (hs != Status::ok && hs != Status::capacity_exceeded) return hs;
+        const Features& cur = harris_.features();
         out.features = cur.count;
         FrameGeometry g;
         if (have_previous_) {
@@ -131,7 +132,7 @@ public:
                 gc.match.offset_x = clamp16(ex - cx);
                 gc.match.offset_y = clamp16(ey - cy);
             }
-            out.geometry = homography_between(prev(), cur, gc, scratch_);
+            out.geometry = homography_between(prev_, cur, gc, scratch_);
             g.valid = out.geometry.ransac.status == HomographyStatus::ok;
             g.h = out.geometry.ransac.h;
             g.reprojection_px = out.geometry.ransac.reprojection_px;
@@ -142,7 +143,7 @@ public:
             const PixelRegion& r = capture_.region();
             if (!cut_template(r, roi_x_, roi_y_, roi_w_, roi_h_, template_)) {
                 tracking_ = false;
-                swap_features();
+                keep_features(cur);
                 return Status::bad_size;  // the box is not wholly inside the frame
             }
             tracker_.init(static_cast<float>(roi_x_) + 0.5f * static_cast<float>(roi_w_ - 1),
@@ -179,7 +180,7 @@ public:
                 refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
         }
         out.tracking = tracking_;
-        swap_features();
+        keep_features(cur);
         return hs;
     }
 
@@ -206,23 +207,26 @@ private:
         offset_y_q8_ = y_q8 - (top * 256 + (h - 1) * 128);
     }
     static int32_t floor_div256(int32_t v) { return v >= 0 ? v / 256 : -((255 - v) / 256); }
-    const Features& prev() const { return features_[current_ ^ 1u]; }
-    void swap_features() {
-        current_ ^= 1u;
+    // This frame's corners become the next frame's previous ones (a copy: the detector's set
+    // is overwritten by the next frame, and one copy costs less RAM than a second detector set).
+    void keep_features(const Features& cur) {
+        prev_.width = cur.width;
+        prev_.height = cur.height;
+        prev_.count = cur.count;
+        for (uint16_t i = 0; i < cur.count; ++i) prev_.items[i] = cur.items[i];
         have_previous_ = true;
     }
 
     TargetPipelineConfig config_;
     GradientStage<MaxWidth> gradient_;
     HarrisDetector<MaxWidth, MaxFeatures, PatchRadius> harris_;
-    Features features_[2];
+    Features prev_;  // the previous frame's corners
     FrameHomographyScratch<PatchRadius, MaxFeatures> scratch_;
     RegionCapture<MaxRegion, MaxRegion> capture_;
     TargetTemplate<MaxTemplate> template_;
     TargetTracker tracker_;
     Homography last_h_;
     uint16_t width_ = 0, height_ = 0, y_ = 0;
-    unsigned current_ = 0;
     bool have_previous_ = false;
     bool tracking_ = false;
     bool pending_target_ = false;
@@ -231,7 +235,8 @@ private:
     uint8_t roi_w_ = 0, roi_h_ = 0;
 };
 
-// QVGA: 320-pixel rows, 96 corners, 9×9 patches, templates up to 24×24.
+// QVGA: 320-pixel rows, 96 corners, 9×9 patches, templates up to 16×16, a captured region of
+// up to 84×84 px (the default 24 px search radius + 8 px margin + half a template, each side).
 using TargetPipelineQvga = TargetPipeline<320>;
 // VGA for the CLI.
 using TargetPipelineVga = TargetPipeline<640, 160>;

@@ -55,7 +55,8 @@ struct TargetTrackerParams {
     float gate_nds = 9.21f;        // D_nds gate: χ²(2 dof) at 99 %
     float gate_rep_px = 1.5f;      // homography trustworthy when its reprojection error <= this, px
     float reset_nds = 5.99f;       // reset when D_nds <= this (χ²(2) at 95 %) ...
-    float reset_det_s = 400.0f;    // ... and det S <= this, px⁴ (σ ≈ 4.5 px per axis)
+    float reset_det_s = 2500.0f;   // ... and det S <= this, px⁴ (σ ≈ 7 px per axis; with the
+                                   // paper's Q, S never falls below q_pos + r ≈ 24 px² per axis)
     float gate_sigmas = 3.0f;      // search radius = gate_sigmas · √(largest variance of S), px,
     float min_radius_px = 4.0f;    //   clamped to [min_radius_px, max_radius_px]
     float max_radius_px = 24.0f;

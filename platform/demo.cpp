@@ -1,4 +1,5 @@
 #include "demo.h"
+#include "demo_target.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -127,6 +128,7 @@ int run_demo(const std::string& out_dir) {
     }
     ok = ok && save(out_dir + "/lines.png", w, h, 3, overlay.pixels);
     ok = ok && run_demo_sequence(out_dir);
+    ok = ok && run_demo_target(out_dir);
     return ok ? 0 : 1;
 }
 
