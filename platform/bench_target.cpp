@@ -125,6 +125,9 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
+    std::printf("RAM (sizeof): TargetPipelineQvga %zu B, of which HarrisDetector<320, 96> %zu B and the previous "
+                "frame's FeatureSet<4, 96> %zu B\n",
+                sizeof(qt::TargetPipelineQvga), sizeof(qt::HarrisDetector<320, 96>), sizeof(qt::FeatureSet<4, 96>));
     mkdir("bench_out", 0755);
     mkdir(out.c_str(), 0755);
     const size_t nv = sizeof kVariants / sizeof kVariants[0];
