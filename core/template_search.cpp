@@ -19,7 +19,7 @@ int32_t vertex_q8(int32_t a, int32_t b, int32_t c) {
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
                             int32_t cx, int32_t cy, uint16_t radius) {
     TemplateHit hit;
-    if (tw == 0 || th == 0 || region.w < tw || region.h < th) return hit;
+    if (tw == 0 || th == 0 || uint32_t{tw} * th > kNccMaxPixels || region.w < tw || region.h < th) return hit;
     // Top-left corners whose centre (u + (tw − 1)/2, v + (th − 1)/2) is within ±radius of
     // (cx, cy), and whose template lies in the region.
     const int32_t uc = cx - (tw - 1) / 2, vc = cy - (th - 1) / 2;
@@ -28,10 +28,29 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     if (v0 < region.y0) v0 = region.y0;
     if (u1 > region.x0 + region.w - tw) u1 = region.x0 + region.w - tw;
     if (v1 > region.y0 + region.h - th) v1 = region.y0 + region.h - th;
+    // The template's Σa and Σa² are the same at every candidate: summed once here, so each
+    // candidate costs only Σb, Σb² and Σab (3 multiply-adds a pixel instead of 5).
+    NccSums t;
+    t.n = uint32_t{tw} * th;
+    for (uint32_t i = 0; i < t.n; ++i) {
+        t.sa += tpl[i];
+        t.saa += uint32_t{tpl[i]} * tpl[i];
+    }
     auto score = [&](int32_t u, int32_t v) {
         const uint8_t* at = region.pixels + static_cast<uint32_t>(v - region.y0) * region.stride +
                             static_cast<uint32_t>(u - region.x0);
-        return static_cast<int32_t>(ncc_q15(tpl, tw, at, region.stride, tw, th).q15);
+        NccSums s = t;
+        for (uint8_t y = 0; y < th; ++y) {
+            const uint8_t* rt = tpl + uint32_t{y} * tw;
+            const uint8_t* rb = at + uint32_t{y} * region.stride;
+            for (uint8_t x = 0; x < tw; ++x) {
+                const uint32_t b = rb[x];
+                s.sb += b;
+                s.sbb += b * b;
+                s.sab += b * rt[x];
+            }
+        }
+        return static_cast<int32_t>(ncc_from_sums(s).q15);
     };
     int32_t best = INT32_MIN, bu = 0, bv = 0;
     for (int32_t v = v0; v <= v1; ++v)
