@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "board_runner.h"
+#include "flag_table.h"
 #include "parse_number.h"
 #include "quad_tracker.h"
 
@@ -13,14 +14,7 @@ namespace qt::cli {
 
 namespace {
 
-struct Option {
-    const char* name;
-    const char* value;  // placeholder in the help
-    const char* help;   // with unit and range
-    std::function<std::string(DetectOptions)> show;  // the value in a copy of the options
-    std::function<bool(const std::string&, DetectOptions&, std::string&)> set;  // parse, check, store
-    Command command = Command::detect;  // detect: every command's; track: track's only
-};
+using Option = Flag<DetectOptions, Command>;
 
 // The same flag for `quadtrack track` only.
 Option track_only(Option o) {
@@ -52,14 +46,7 @@ std::string show_deg(angle_t a) {
 template <typename T>
 Option integer(const char* name, const char* value, const char* help, long lo, long hi,
                std::function<T&(DetectOptions&)> field) {
-    return {name, value, help,
-            [field](DetectOptions o) { return std::to_string(field(o)); },
-            [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
-                long v = 0;
-                if (!parse_int(t, lo, hi, v, e)) return false;
-                field(o) = static_cast<T>(v);
-                return true;
-            }};
+    return integer_flag<T, DetectOptions>(name, value, help, lo, hi, field, Command::detect);
 }
 
 Option decimal(const char* name, const char* value, const char* help, double lo, double hi,
@@ -82,8 +69,9 @@ Option degrees(const char* name, const char* help, double lo, double hi, std::fu
             }};
 }
 
-const std::vector<Option>& table() {
-    static const std::vector<Option> options = {
+const FlagTable<DetectOptions, Command>& table() {
+    // Command::detect: every command's; track_only(): track's only.
+    static const FlagTable<DetectOptions, Command> options{{
         integer<uint16_t>("edge-threshold", "LEVEL", "edge pixel: L1 gradient magnitude |gx|+|gy| at least this, grey levels, 1..510", 1, 510,
                           [](DetectOptions& o) -> uint16_t& { return o.params.lines.edge_threshold; }),
         integer<uint16_t>("theta-bins", "N", "Hough accumulator angle bins over 180 degrees (90 = 2 degrees each), 2..90", 2, 90,
@@ -195,16 +183,8 @@ const std::vector<Option>& table() {
                            [](DetectOptions& o) -> q16_16& { return o.track.gate_distance; })),
         track_only(integer<uint8_t>("max-predicted", "N", "a side may be predicted this many frames in a row before the track is dropped, frames, 0..255", 0, 255,
                                     [](DetectOptions& o) -> uint8_t& { return o.track.max_predicted; })),
-    };
+    }, Command::detect, 34};
     return options;
-}
-
-bool serves(const Option& o, Command command) { return o.command == Command::detect || o.command == command; }
-
-const Option* lookup(const std::string& name, Command command) {
-    for (const Option& o : table())
-        if (name == o.name && serves(o, command)) return &o;
-    return nullptr;
 }
 
 }  // namespace
@@ -222,76 +202,23 @@ DetectOptions::DetectOptions() {
     params.quads.display_aspect = q16_16::from_ratio(display_width, display_height);
 }
 
-bool is_option(const std::string& name, Command command) { return lookup(name, command) != nullptr; }
-
-bool apply_option(const std::string& name, const std::string& value, DetectOptions& options, std::string& error,
-                  Command command) {
-    const Option* o = lookup(name, command);
-    if (o == nullptr) {
-        error = "unknown option '--" + name + "'";
-        return false;
-    }
-    std::string why;
-    if (!o->set(value, options, why)) {
-        error = "--" + name + ": " + why;
-        return false;
-    }
-    return true;
-}
-
-std::string options_help(Command command) {
-    const DetectOptions defaults;
-    std::string text;
-    for (const Option& o : table()) {
-        if (!serves(o, command)) continue;
-        std::string flag = std::string("  --") + o.name + " " + o.value;
-        if (flag.size() < 34) flag.resize(34, ' ');
-        text += flag + o.help + " (default " + o.show(defaults) + ")\n";
-    }
-    return text;
-}
+std::string options_help(Command command) { return table().help(command); }
 
 int parse_command_line(const std::vector<std::string>& args, Command command, const std::string& usage,
                        DetectOptions& options, std::string& positional, std::FILE* out, std::FILE* err) {
     const char* name = command == Command::detect ? "detect" : "track";
     const char* what = command == Command::detect ? "image" : "sequence";
     const char* what_upper = command == Command::detect ? "IMAGE" : "SEQUENCE";
-    std::string error;
+    std::vector<std::string> given;
     positional.clear();
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "--help" || a == "-h") {
-            std::fputs(usage.c_str(), out);
-            return 0;
-        }
-        if (a.rfind("--", 0) == 0) {
-            std::string flag = a.substr(2), value;
-            const size_t eq = flag.find('=');
-            if (eq != std::string::npos) {
-                value = flag.substr(eq + 1);
-                flag.resize(eq);
-            } else if (!is_option(flag, command)) {
-                std::fprintf(err, "quadtrack %s: unknown option '%s' (see quadtrack %s --help)\n", name, a.c_str(), name);
-                return 2;
-            } else if (i + 1 == args.size()) {
-                std::fprintf(err, "quadtrack %s: %s needs a value\n", name, a.c_str());
-                return 2;
-            } else {
-                value = args[++i];
-            }
-            if (!apply_option(flag, value, options, error, command)) {
-                std::fprintf(err, "quadtrack %s: %s\n", name, error.c_str());
-                return 2;
-            }
-            continue;
-        }
-        if (!positional.empty()) {
-            std::fprintf(err, "quadtrack %s: one %s only, got '%s' and '%s'\n", name, what, positional.c_str(), a.c_str());
-            return 2;
-        }
-        positional = a;
+    const int parsed = table().parse(args, command, name, usage, options, given, out, err);
+    if (parsed >= 0) return parsed;
+    if (given.size() > 1) {
+        std::fprintf(err, "quadtrack %s: one %s only, got '%s' and '%s'\n", name, what, given[0].c_str(),
+                     given[1].c_str());
+        return 2;
     }
-    if (positional.empty()) {
+    if (given.empty()) {
         std::fprintf(err, "quadtrack %s: no %s given (see quadtrack %s --help)\n", name, what_upper, name);
         return 2;
     }
@@ -299,6 +226,7 @@ int parse_command_line(const std::vector<std::string>& args, Command command, co
         std::fprintf(err, "quadtrack %s: --min-side is above --max-side\n", name);
         return 2;
     }
+    positional = given[0];
     return -1;
 }
 

@@ -37,14 +37,6 @@ struct DetectOptions {
     DetectOptions();  // params.quads.display_aspect follows the display size
 };
 
-// Applies flag `name` (without the leading "--") with `value`. Returns false with a one-line
-// message in `error` for a flag unknown to `command`, a malformed number or a value out of range.
-bool apply_option(const std::string& name, const std::string& value, DetectOptions& options, std::string& error,
-                  Command command = Command::detect);
-
-// True if `name` is one of the table's flags for `command`.
-bool is_option(const std::string& name, Command command = Command::detect);
-
 // The help lines of every flag of `command`: "  --name VALUE   text (unit, range; default d)".
 std::string options_help(Command command = Command::detect);
 

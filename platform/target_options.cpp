@@ -3,20 +3,14 @@
 #include <cmath>
 #include <functional>
 
+#include "flag_table.h"
 #include "parse_number.h"
 
 namespace qt::cli {
 
 namespace {
 
-struct Option {
-    const char* name;
-    const char* value;  // placeholder in the help
-    const char* help;   // with unit and range
-    std::function<std::string(TargetOptions)> show;  // the value in a copy of the options
-    std::function<bool(const std::string&, TargetOptions&, std::string&)> set;
-    bool target_only = false;  // true: `target` only; false: both commands
-};
+using Option = Flag<TargetOptions, GeometryCommand>;
 
 std::string show_float(double v) {
     char buf[32];
@@ -24,8 +18,9 @@ std::string show_float(double v) {
     return buf;
 }
 
+// A flag of `target` only unless `command` says homography (then both commands').
 Option real(const char* name, const char* value, const char* help, double lo, double hi,
-            std::function<float&(TargetOptions&)> field, bool target_only = true) {
+            std::function<float&(TargetOptions&)> field, GeometryCommand command = GeometryCommand::target) {
     return {name, value, help,
             [field](TargetOptions o) { return show_float(field(o)); },
             [field, lo, hi](const std::string& t, TargetOptions& o, std::string& e) {
@@ -34,21 +29,13 @@ Option real(const char* name, const char* value, const char* help, double lo, do
                 field(o) = static_cast<float>(v);
                 return true;
             },
-            target_only};
+            command};
 }
 
 template <typename T>
 Option integer(const char* name, const char* value, const char* help, long lo, long hi,
-               std::function<T&(TargetOptions&)> field, bool target_only = true) {
-    return {name, value, help,
-            [field](TargetOptions o) { return std::to_string(field(o)); },
-            [field, lo, hi](const std::string& t, TargetOptions& o, std::string& e) {
-                long v = 0;
-                if (!parse_int(t, lo, hi, v, e)) return false;
-                field(o) = static_cast<T>(v);
-                return true;
-            },
-            target_only};
+               std::function<T&(TargetOptions&)> field, GeometryCommand command = GeometryCommand::target) {
+    return integer_flag<T, TargetOptions>(name, value, help, lo, hi, field, command);
 }
 
 // A score -1..1 stored as Q15.
@@ -61,7 +48,7 @@ Option score_q15(const char* name, const char* help, std::function<int16_t&(Targ
                 field(o) = static_cast<int16_t>(std::lround(std::fmin(v * 32768.0, 32767.0)));
                 return true;
             },
-            false};
+            GeometryCommand::homography};
 }
 
 bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
@@ -91,15 +78,16 @@ bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
     return true;
 }
 
-const std::vector<Option>& table() {
-    static const std::vector<Option> options = {
+// GeometryCommand::homography: both commands' flags; GeometryCommand::target: target's only.
+const FlagTable<TargetOptions, GeometryCommand>& table() {
+    static const FlagTable<TargetOptions, GeometryCommand> options{{
         {"roi", "X,Y,W,H", "the target's box in frame 0: top-left pixel and size, px (W, H 1..24)",
          [](TargetOptions o) {
              return o.roi_set ? std::to_string(o.roi_x) + "," + std::to_string(o.roi_y) + "," +
                                     std::to_string(o.roi_w) + "," + std::to_string(o.roi_h)
                               : std::string("none, required");
          },
-         parse_roi, true},
+         parse_roi, GeometryCommand::target},
         {"method", "NAME", "fused (the paper's method), filter_only, homography_only or template_only",
          [](TargetOptions o) { return std::string(target_method_name(o.config.tracker.method)); },
          [](const std::string& t, TargetOptions& o, std::string& e) {
@@ -112,7 +100,7 @@ const std::vector<Option>& table() {
              e = "'" + t + "' is not fused, filter_only, homography_only or template_only";
              return false;
          },
-         true},
+         GeometryCommand::target},
         {"reset", "on|off", "Table III's reset of the accumulated homography when the target is found again",
          [](TargetOptions o) { return std::string(o.config.tracker.reset ? "on" : "off"); },
          [](const std::string& t, TargetOptions& o, std::string& e) {
@@ -123,7 +111,7 @@ const std::vector<Option>& table() {
              o.config.tracker.reset = t == "on";
              return true;
          },
-         true},
+         GeometryCommand::target},
         real("q-pos", "PX2", "Kalman Q's position variance per frame, px^2, 0..10000",
              0, 10000, [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_pos; }),
         real("q-vel", "PX2", "Kalman Q's velocity variance per frame, (px/frame)^2, 0..1000",
@@ -145,25 +133,17 @@ const std::vector<Option>& table() {
         integer<uint16_t>("max-unseen", "FRAMES", "lost after this many frames without a match, 1..65535",
                           1, 65535, [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
         integer<uint16_t>("search-radius", "PX", "corner matching: candidates within this of the expected position, px, 1..128",
-                          1, 128, [](TargetOptions& o) -> uint16_t& { return o.config.geometry.match.search_radius_px; }, false),
+                          1, 128, [](TargetOptions& o) -> uint16_t& { return o.config.geometry.match.search_radius_px; }, GeometryCommand::homography),
         score_q15("min-match", "corner matching: least NCC of a match, -1..1",
                   [](TargetOptions& o) -> int16_t& { return o.config.geometry.match.min_score_q15; }),
         real("inlier-px", "PX", "RANSAC inlier threshold on the transfer error, px, 0.05..50",
-             0.05, 50, [](TargetOptions& o) -> float& { return o.config.geometry.ransac.inlier_px; }, false),
+             0.05, 50, [](TargetOptions& o) -> float& { return o.config.geometry.ransac.inlier_px; }, GeometryCommand::homography),
         integer<uint16_t>("max-iterations", "N", "RANSAC hypotheses at most, 1..65535",
-                          1, 65535, [](TargetOptions& o) -> uint16_t& { return o.config.geometry.ransac.max_iterations; }, false),
+                          1, 65535, [](TargetOptions& o) -> uint16_t& { return o.config.geometry.ransac.max_iterations; }, GeometryCommand::homography),
         integer<uint64_t>("seed", "N", "RANSAC's PRNG seed, 0..2^31-1",
-                          0, 2147483647L, [](TargetOptions& o) -> uint64_t& { return o.config.geometry.ransac.seed; }, false),
-    };
+                          0, 2147483647L, [](TargetOptions& o) -> uint64_t& { return o.config.geometry.ransac.seed; }, GeometryCommand::homography),
+    }, GeometryCommand::homography, 28};
     return options;
-}
-
-bool serves(const Option& o, GeometryCommand c) { return !o.target_only || c == GeometryCommand::target; }
-
-const Option* lookup(const std::string& name, GeometryCommand c) {
-    for (const Option& o : table())
-        if (name == o.name && serves(o, c)) return &o;
-    return nullptr;
 }
 
 }  // namespace
@@ -178,58 +158,15 @@ TargetPipelineConfig default_target_config() {
 
 TargetOptions::TargetOptions() : config(default_target_config()) {}
 
-std::string target_options_help(GeometryCommand command) {
-    const TargetOptions defaults;
-    std::string text;
-    for (const Option& o : table()) {
-        if (!serves(o, command)) continue;
-        std::string flag = std::string("  --") + o.name + " " + o.value;
-        if (flag.size() < 28) flag.resize(28, ' ');
-        text += flag + o.help + " (default " + o.show(defaults) + ")\n";
-    }
-    return text;
-}
+std::string target_options_help(GeometryCommand command) { return table().help(command); }
 
 int parse_target_command_line(const std::vector<std::string>& args, GeometryCommand command,
                               const std::string& usage, TargetOptions& options,
                               std::vector<std::string>& positional, std::FILE* out, std::FILE* err) {
     const bool target = command == GeometryCommand::target;
     const char* name = target ? "target" : "homography";
-    positional.clear();
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "--help" || a == "-h") {
-            std::fputs(usage.c_str(), out);
-            return 0;
-        }
-        if (a.rfind("--", 0) != 0) {
-            positional.push_back(a);
-            continue;
-        }
-        std::string flag = a.substr(2), value;
-        const size_t eq = flag.find('=');
-        if (eq != std::string::npos) {
-            value = flag.substr(eq + 1);
-            flag.resize(eq);
-        }
-        const Option* o = lookup(flag, command);
-        if (o == nullptr) {
-            std::fprintf(err, "quadtrack %s: unknown option '--%s' (see quadtrack %s --help)\n", name, flag.c_str(), name);
-            return 2;
-        }
-        if (eq == std::string::npos) {
-            if (i + 1 == args.size()) {
-                std::fprintf(err, "quadtrack %s: %s needs a value\n", name, a.c_str());
-                return 2;
-            }
-            value = args[++i];
-        }
-        std::string why;
-        if (!o->set(value, options, why)) {
-            std::fprintf(err, "quadtrack %s: --%s: %s\n", name, flag.c_str(), why.c_str());
-            return 2;
-        }
-    }
+    const int parsed = table().parse(args, command, name, usage, options, positional, out, err);
+    if (parsed >= 0) return parsed;
     const size_t wanted = target ? 1 : 2;
     if (positional.size() != wanted) {
         std::fprintf(err, "quadtrack %s: expected %s, got %zu argument%s (see quadtrack %s --help)\n", name,
