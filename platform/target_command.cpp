@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "image_io.h"
+#include "frame_loop.h"
 #include "target_json.h"
 
 namespace qt::cli {
@@ -25,40 +25,15 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
                                                  positional, out, err);
     if (parsed >= 0) return parsed;
     const std::string& spec = positional[0];
-    io::FrameSource source;
-    std::string error;
-    if (!source.open(spec, error)) {
-        std::fprintf(err, "quadtrack target: %s\n", error.c_str());
-        return 1;
-    }
     auto pipeline = std::make_unique<CliTargetPipeline>();  // ~120 KB: heap, not stack
     pipeline->configure(options.config);
     pipeline->set_target(options.roi_x, options.roi_y, static_cast<uint8_t>(options.roi_w),
                          static_cast<uint8_t>(options.roi_h));
-    scene::GreyImage frame;
-    int width = 0, height = 0;
-    for (int k = 0;; ++k) {
-        const io::FrameSource::Next next = source.next(frame, error);
-        if (next == io::FrameSource::Next::end) {
-            if (k > 0) return 0;
-            std::fprintf(err, "quadtrack target: %s: no frames\n", spec.c_str());
-            return 1;
-        }
-        if (next == io::FrameSource::Next::error) {
-            std::fprintf(err, "quadtrack target: %s\n", error.c_str());
-            return 1;
-        }
-        if (k == 0) {
-            width = frame.width;
-            height = frame.height;
-            if (width > 640 || height > 480) {
-                std::fprintf(err, "quadtrack target: %s: %d x %d is above the 640 x 480 capacity\n", spec.c_str(),
-                             width, height);
-                return 1;
-            }
-        } else if (frame.width != width || frame.height != height) {
-            std::fprintf(err, "quadtrack target: %s: frame %d is %d x %d, the sequence started at %d x %d\n",
-                         spec.c_str(), k, frame.width, frame.height, width, height);
+    return for_each_frame(spec, "target", err, [&](int k, const scene::GreyImage& frame) {
+        const int width = frame.width, height = frame.height;
+        if (width > 640 || height > 480) {
+            std::fprintf(err, "quadtrack target: %s: %d x %d is above the 640 x 480 capacity\n", spec.c_str(),
+                         width, height);
             return 1;
         }
         Status s = pipeline->begin_frame(static_cast<uint16_t>(width), static_cast<uint16_t>(height));
@@ -77,7 +52,8 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         }
         std::fprintf(out, "%s\n", target_json(k, result).c_str());
         std::fflush(out);
-    }
+        return 0;
+    });
 }
 
 }  // namespace qt::cli

@@ -2,7 +2,7 @@
 
 #include "detect_command.h"
 #include "detect_json.h"
-#include "image_io.h"
+#include "frame_loop.h"
 #include "quad_tracker.h"
 
 namespace qt::cli {
@@ -37,39 +37,17 @@ QuadTrackerParams tracker_params(const DetectOptions& o, uint16_t width, uint16_
 
 int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     DetectOptions options;
-    std::string spec, error;
+    std::string spec;
     const int parsed = parse_command_line(args, Command::track, track_usage(), options, spec, out, err);
     if (parsed >= 0) return parsed;
 
-    io::FrameSource source;
-    if (!source.open(spec, error)) {
-        std::fprintf(err, "quadtrack track: %s\n", error.c_str());
-        return 1;
-    }
     QuadTracker tracker;
-    scene::GreyImage frame;
-    int width = 0, height = 0;
-    for (int k = 0;; ++k) {
-        const io::FrameSource::Next next = source.next(frame, error);
-        if (next == io::FrameSource::Next::end) {
-            if (k > 0) return 0;
-            std::fprintf(err, "quadtrack track: %s: no frames\n", spec.c_str());
-            return 1;
-        }
-        if (next == io::FrameSource::Next::error) {
-            std::fprintf(err, "quadtrack track: %s\n", error.c_str());
-            return 1;
-        }
-        if (k == 0) {
-            width = frame.width;
-            height = frame.height;
-            tracker.set_params(tracker_params(options, static_cast<uint16_t>(width), static_cast<uint16_t>(height)));
-        } else if (frame.width != width || frame.height != height) {
-            std::fprintf(err, "quadtrack track: %s: frame %d is %d x %d, the sequence started at %d x %d\n",
-                         spec.c_str(), k, frame.width, frame.height, width, height);
-            return 1;
-        }
+    return for_each_frame(spec, "track", err, [&](int k, const scene::GreyImage& frame) {
+        if (k == 0)
+            tracker.set_params(tracker_params(options, static_cast<uint16_t>(frame.width),
+                                              static_cast<uint16_t>(frame.height)));
         DetectResult result;
+        std::string error;
         if (!detect_frame(frame, options, result, error)) {
             std::fprintf(err, "quadtrack track: %s: frame %d: %s\n", spec.c_str(), k, error.c_str());
             return 1;
@@ -80,7 +58,8 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
                                             options.display_height);
         std::fprintf(out, "%s\n", line.c_str());
         std::fflush(out);
-    }
+        return 0;
+    });
 }
 
 }  // namespace qt::cli
