@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "homography.h"
+#include "plane_motion.h"
 #include "prng.h"
 #include "random.h"
 
@@ -30,44 +31,17 @@ namespace {
 
 namespace sc = qt::scene;
 using Clock = std::chrono::steady_clock;
-using H64 = std::array<double, 9>;
+using H64 = sc::Homography64;
+using P = sc::Point64;
+using sc::apply64;
 
 constexpr double kW = 320, kH = 240;  // frame, px
 constexpr int kPairs = 200;
 constexpr double kNoise = 0.5;       // px per coordinate
 constexpr float kThresholdPx = 2.0f;  // inlier threshold for every method
 
-struct P {
-    double x, y;
-};
-
-P apply64(const H64& h, double x, double y) {
-    const double w = h[6] * x + h[7] * y + h[8];
-    return {(h[0] * x + h[1] * y + h[2]) / w, (h[3] * x + h[4] * y + h[5]) / w};
-}
-
-H64 mul64(const H64& a, const H64& b) {
-    H64 m{};
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) m[3 * r + c] += a[3 * r + k] * b[3 * k + c];
-    return m;
-}
-
 // The plausible inter-frame motion of the tests (tests/test_homography.cpp).
-H64 random_motion(qt::Pcg32& rng) {
-    const double th = sc::uniform(rng, -3, 3) * M_PI / 180, s = sc::uniform(rng, 0.97, 1.03);
-    const double tx = sc::uniform(rng, -10, 10), ty = sc::uniform(rng, -10, 10);
-    const double g = sc::uniform(rng, -1e-4, 1e-4), k = sc::uniform(rng, -1e-4, 1e-4);
-    const double cx = kW / 2, cy = kH / 2;
-    const H64 to_c = {1, 0, -cx, 0, 1, -cy, 0, 0, 1};
-    const H64 persp = {1, 0, 0, 0, 1, 0, g, k, 1};
-    const H64 sr = {s * std::cos(th), -s * std::sin(th), 0, s * std::sin(th), s * std::cos(th), 0, 0, 0, 1};
-    const H64 back = {1, 0, cx + tx, 0, 1, cy + ty, 0, 0, 1};
-    H64 h = mul64(back, mul64(sr, mul64(persp, to_c)));
-    for (double& v : h) v /= h[8];
-    return h;
-}
+H64 random_motion(qt::Pcg32& rng) { return sc::random_inter_frame_motion(rng, kW, kH); }
 
 struct Trial {
     H64 truth;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "homography.h"
+#include "plane_motion.h"
 #include "prng.h"
 #include "random.h"
 
@@ -22,33 +23,13 @@ using namespace qt;
 
 namespace {
 
-using H64 = std::array<double, 9>;
-
-struct P {
-    double x, y;
-};
+using H64 = scene::Homography64;
+using P = scene::Point64;
+using scene::apply64;
+using scene::mul64;
 
 constexpr double kW = 320, kH = 240;  // the frame, px
 const P kCorners[4] = {{0, 0}, {kW, 0}, {kW, kH}, {0, kH}};
-
-P apply64(const H64& h, double x, double y) {
-    const double w = h[6] * x + h[7] * y + h[8];
-    return {(h[0] * x + h[1] * y + h[2]) / w, (h[3] * x + h[4] * y + h[5]) / w};
-}
-
-H64 mul64(const H64& a, const H64& b) {
-    H64 m{};
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) m[3 * r + c] += a[3 * r + k] * b[3 * k + c];
-    return m;
-}
-
-H64 scaled(H64 h) {
-    const double s = h[8];
-    for (double& v : h) v /= s;
-    return h;
-}
 
 H64 to64(const Homography& h) {
     H64 d;
@@ -124,19 +105,7 @@ double geometric_error_sq(const H64& h, P a, P b) {
            (hx.y - b.y) * (hx.y - b.y);
 }
 
-// A plausible inter-frame motion about the frame centre: rotation <= 3°, scale 0.97-1.03,
-// translation <= 10 px, perspective terms <= 1e-4 /px.
-H64 random_motion(Pcg32& rng) {
-    const double th = scene::uniform(rng, -3, 3) * M_PI / 180, s = scene::uniform(rng, 0.97, 1.03);
-    const double tx = scene::uniform(rng, -10, 10), ty = scene::uniform(rng, -10, 10);
-    const double g = scene::uniform(rng, -1e-4, 1e-4), k = scene::uniform(rng, -1e-4, 1e-4);
-    const double cx = kW / 2, cy = kH / 2;
-    const H64 to_c = {1, 0, -cx, 0, 1, -cy, 0, 0, 1};
-    const H64 persp = {1, 0, 0, 0, 1, 0, g, k, 1};
-    const H64 sr = {s * std::cos(th), -s * std::sin(th), 0, s * std::sin(th), s * std::cos(th), 0, 0, 0, 1};
-    const H64 back = {1, 0, cx + tx, 0, 1, cy + ty, 0, 0, 1};
-    return scaled(mul64(back, mul64(sr, mul64(persp, to_c))));
-}
+H64 random_motion(Pcg32& rng) { return scene::random_inter_frame_motion(rng, kW, kH); }
 
 struct Scenario {
     H64 truth;
@@ -325,7 +294,7 @@ TEST_CASE("apply, multiply and invert agree with double math; H⁻¹·H = I", "[
         Homography ab;
         REQUIRE(multiply_homographies(fa, fb, ab));
         CHECK(ab.m[8] == 1.0f);
-        const H64 rab = scaled(mul64(a32, b32));
+        const H64 rab = scene::normalised64(mul64(a32, b32));
         for (int i = 0; i < 9; ++i) CHECK(ab.m[i] == Approx(rab[i]).margin(1e-6 * (i == 2 || i == 5 ? 100 : 1)));
         Homography inv;
         REQUIRE(invert_homography(fa, inv));
