@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "kalman.h"
+#include "matrix_reference.h"
 #include "prng.h"
 
 using namespace qt;
@@ -24,40 +25,7 @@ double val(q16_16 v) { return v.raw / kQ16; }
 q16_16 q16(double v) { return q16_16::from_raw(std::llround(v * kQ16)); }
 
 // ---- the reference: 4×4, straight from equations (3)–(5) ---------------------------------------
-template <int R, int C>
-struct Mat {
-    double m[R][C] = {};
-};
-
-template <int R, int K, int C>
-Mat<R, C> operator*(const Mat<R, K>& a, const Mat<K, C>& b) {
-    Mat<R, C> out;
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j)
-            for (int k = 0; k < K; ++k) out.m[i][j] += a.m[i][k] * b.m[k][j];
-    return out;
-}
-template <int R, int C>
-Mat<R, C> operator+(const Mat<R, C>& a, const Mat<R, C>& b) {
-    Mat<R, C> out;
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out.m[i][j] = a.m[i][j] + b.m[i][j];
-    return out;
-}
-template <int R, int C>
-Mat<R, C> operator-(const Mat<R, C>& a, const Mat<R, C>& b) {
-    Mat<R, C> out;
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out.m[i][j] = a.m[i][j] - b.m[i][j];
-    return out;
-}
-template <int R, int C>
-Mat<C, R> transpose(const Mat<R, C>& a) {
-    Mat<C, R> out;
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out.m[j][i] = a.m[i][j];
-    return out;
-}
+using test::Mat;
 
 struct RefKalman4 {
     Mat<4, 1> X;

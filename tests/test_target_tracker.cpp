@@ -12,6 +12,7 @@
 
 #include "frame_homography.h"
 #include "homography.h"
+#include "matrix_reference.h"
 #include "prng.h"
 #include "random.h"
 #include "target_kalman.h"
@@ -23,25 +24,7 @@ namespace {
 
 // ---- the reference: full 4×4 matrices in double, X = Φ X, P = Φ P Φᵀ + Q, S = H P Hᵀ + R,
 // K = P Hᵀ S⁻¹, X += K ν, P = (I − K H) P. No block structure assumed. ----------------------
-template <int R, int C>
-struct Mat {
-    double m[R][C] = {};
-};
-template <int R, int K, int C>
-Mat<R, C> mul(const Mat<R, K>& a, const Mat<K, C>& b) {
-    Mat<R, C> out;
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j)
-            for (int k = 0; k < K; ++k) out.m[i][j] += a.m[i][k] * b.m[k][j];
-    return out;
-}
-template <int R, int C>
-Mat<C, R> tr(const Mat<R, C>& a) {
-    Mat<C, R> out;
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out.m[j][i] = a.m[i][j];
-    return out;
-}
+using test::Mat;
 
 struct RefKalman {
     Mat<4, 1> x;
@@ -61,13 +44,11 @@ struct RefKalman {
         r.m[0][0] = r.m[1][1] = k.r;
     }
     void predict() {
-        x = mul(phi, x);
-        Mat<4, 4> n = mul(mul(phi, p), tr(phi));
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j) p.m[i][j] = n.m[i][j] + q.m[i][j];
+        x = phi * x;
+        p = phi * p * transpose(phi) + q;
     }
     Mat<2, 2> s() const {
-        Mat<2, 2> out = mul(mul(h, p), tr(h));
+        Mat<2, 2> out = h * p * transpose(h);
         for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j) out.m[i][j] += r.m[i][j];
         return out;
@@ -83,23 +64,23 @@ struct RefKalman {
         return out;
     }
     Mat<2, 1> nu(double zx, double zy) const {
-        Mat<2, 1> hx = mul(h, x), out;
+        Mat<2, 1> hx = h * x, out;
         out.m[0][0] = zx - hx.m[0][0];
         out.m[1][0] = zy - hx.m[1][0];
         return out;
     }
     double nds(double zx, double zy) const {
         const Mat<2, 1> v = nu(zx, zy);
-        return mul(mul(tr(v), inv(s())), v).m[0][0];
+        return (transpose(v) * inv(s()) * v).m[0][0];
     }
     void update(double zx, double zy) {
-        const Mat<4, 2> k = mul(mul(p, tr(h)), inv(s()));
-        const Mat<4, 1> dx = mul(k, nu(zx, zy));
+        const Mat<4, 2> k = p * transpose(h) * inv(s());
+        const Mat<4, 1> dx = k * nu(zx, zy);
         for (int i = 0; i < 4; ++i) x.m[i][0] += dx.m[i][0];
-        Mat<4, 4> ikh = mul(k, h);
+        Mat<4, 4> ikh = k * h;
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j) ikh.m[i][j] = (i == j ? 1.0 : 0.0) - ikh.m[i][j];
-        p = mul(ikh, p);
+        p = ikh * p;
     }
 };
 
