@@ -29,17 +29,19 @@ void direction_colour(uint32_t bin, int level, uint8_t* rgb) {
     for (int c = 0; c < 3; ++c) rgb[c] = static_cast<uint8_t>(table[sector][c] * level / 255);
 }
 
-bool save(const std::string& path, int w, int h, int channels, const std::vector<uint8_t>& px) {
+
+}  // namespace
+
+bool save_demo_picture(const std::string& path, int width, int height, int channels,
+                       const std::vector<uint8_t>& pixels) {
     std::string error;
-    if (!io::write_png(path, w, h, channels, px, error)) {
+    if (!io::write_png(path, width, height, channels, pixels, error)) {
         std::fprintf(stderr, "quadtrack demo: %s\n", error.c_str());
         return false;
     }
     std::printf("wrote %s\n", path.c_str());
     return true;
 }
-
-}  // namespace
 
 int run_demo(const std::string& out_dir) {
     std::error_code ec;
@@ -94,9 +96,9 @@ int run_demo(const std::string& out_dir) {
         return 1;
     }
     std::printf("wrote %s/input.pgm (try: quadtrack detect %s/input.pgm)\n", out_dir.c_str(), out_dir.c_str());
-    bool ok = save(out_dir + "/input.png", w, h, 1, frame.pixels) &&
-              save(out_dir + "/gradient_magnitude.png", w, h, 1, magnitude) &&
-              save(out_dir + "/gradient_direction.png", w, h, 3, direction);
+    bool ok = save_demo_picture(out_dir + "/input.png", w, h, 1, frame.pixels) &&
+              save_demo_picture(out_dir + "/gradient_magnitude.png", w, h, 1, magnitude) &&
+              save_demo_picture(out_dir + "/gradient_direction.png", w, h, 3, direction);
 
     // Lines stage: edges (blue), PPHT segments (yellow), clustered lines (red).
     static LineDetectorVga lines;  // 86 KB: static, as firmware would keep it
@@ -126,7 +128,7 @@ int run_demo(const std::string& out_dir) {
                     l.x1.raw / 65536.0, l.y1.raw / 65536.0, l.x2.raw / 65536.0, l.y2.raw / 65536.0,
                     l.rho.raw / 65536.0, angle_to_deg(l.theta).raw / 65536.0, l.points);
     }
-    ok = ok && save(out_dir + "/lines.png", w, h, 3, overlay.pixels);
+    ok = ok && save_demo_picture(out_dir + "/lines.png", w, h, 3, overlay.pixels);
     ok = ok && run_demo_sequence(out_dir);
     ok = ok && run_demo_target(out_dir);
     return ok ? 0 : 1;

@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "demo.h"
 #include "image_io.h"
 #include "overlay.h"
-#include "png_writer.h"
 #include "target_runner.h"
 
 namespace qt::cli {
@@ -39,13 +39,7 @@ bool picture(const std::string& path, const scene::GreyImage& frame, const Targe
     rgb.line(m + frame.width, m - 1, m + frame.width, m + frame.height, {255, 255, 255});
     rgb.line(m + frame.width, m + frame.height, m - 1, m + frame.height, {255, 255, 255});
     rgb.line(m - 1, m + frame.height, m - 1, m - 1, {255, 255, 255});
-    std::string error;
-    if (!io::write_png(path, rgb.width, rgb.height, 3, rgb.pixels, error)) {
-        std::fprintf(stderr, "quadtrack demo: %s\n", error.c_str());
-        return false;
-    }
-    std::printf("wrote %s\n", path.c_str());
-    return true;
+    return save_demo_picture(path, rgb.width, rgb.height, 3, rgb.pixels);
 }
 
 }  // namespace
