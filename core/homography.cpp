@@ -491,11 +491,11 @@ uint16_t ransac_iterations_needed(uint32_t inliers, uint32_t n, float confidence
 const char* homography_status_name(HomographyStatus s) {
     switch (s) {
         case HomographyStatus::ok: return "ok";
-        case HomographyStatus::too_few_pairs: return "too few pairs";
-        case HomographyStatus::degenerate: return "degenerate (no usable sample)";
-        case HomographyStatus::no_consensus: return "no consensus (too few inliers)";
+        case HomographyStatus::too_few_pairs: return "too_few_pairs";
+        case HomographyStatus::degenerate: return "degenerate";
+        case HomographyStatus::no_consensus: return "no_consensus";
     }
-    return "unknown homography status";
+    return "unknown";
 }
 
 bool refit_homography(const PointPair* pairs, uint16_t n, const uint8_t* mask, Homography& out) {

@@ -70,6 +70,7 @@ enum class HomographyStatus : uint8_t {
     degenerate,     // no sample of 4 gave a usable hypothesis
     no_consensus,   // the best hypothesis has fewer than min_inliers inliers
 };
+// The status as one word ("ok", "too_few_pairs", ...), as the CLI's JSON writes it.
 const char* homography_status_name(HomographyStatus s);
 
 struct RansacResult {

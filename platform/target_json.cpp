@@ -12,17 +12,6 @@ std::string num(double v, const char* format = "%.6g") {
     return buf;
 }
 
-// The status as a JSON token (homography_status_name() is prose for logs).
-const char* status_token(HomographyStatus s) {
-    switch (s) {
-        case HomographyStatus::ok: return "ok";
-        case HomographyStatus::too_few_pairs: return "too_few_pairs";
-        case HomographyStatus::degenerate: return "degenerate";
-        case HomographyStatus::no_consensus: return "no_consensus";
-    }
-    return "unknown";
-}
-
 }  // namespace
 
 std::string homography_json(const FrameHomography& g, unsigned features_a, unsigned features_b) {
@@ -39,7 +28,7 @@ std::string homography_json(const FrameHomography& g, unsigned features_a, unsig
         s += "null";
     }
     s += ",\"inliers\":" + std::to_string(g.ransac.inliers) + ",\"matches\":" + std::to_string(g.matches) +
-         ",\"status\":\"" + status_token(g.ransac.status) + "\",\"reprojection_px\":" +
+         ",\"status\":\"" + homography_status_name(g.ransac.status) + "\",\"reprojection_px\":" +
          num(g.ransac.reprojection_px, "%.4f") + ",\"features\":[" + std::to_string(features_a) + "," +
          std::to_string(features_b) + "]}";
     return s;
