@@ -7,9 +7,18 @@
 //   +seed=S +stall=P     P percent of clocks with an input gap and, independently, output
 //                        back-pressure, from two xorshift32 generators seeded from S (0: none)
 //   +corrupt=K           flip bit 0 of expected beat K after loading (fault injection)
+//   +resets=FILE +nresets=N  reset points (the soak's .resets.hex, docs/gradient.md): before
+//                        input beat in_beat the bench stops offering input, keeps the output
+//                        side going for 3..18 clocks (1 in 8 resets: up to 2*MAX_WIDTH+2) so
+//                        that the error pulses of every accepted beat have landed, checks the
+//                        error count against the file, then holds rst for 1..8 clocks (xorshift)
+//                        and goes on. Before a reset the block may emit any prefix of the
+//                        segment's expected beats, no more; the first beat after it must be
+//                        expected beat out_beat (a start of frame).
 // Exit status is non-zero ($fatal) on a mismatch, a missing or extra beat, a stuck stream or a
-// wrong error count. With +stall=0 the latency from a pixel's acceptance to the output of its
-// own gradient word is reported over interior pixels (x = 1..W-2, rows with a successor row).
+// wrong error count. With +stall=0 and no resets the latency from a pixel's acceptance to the
+// output of its own gradient word is reported over interior pixels (x = 1..W-2, rows with a
+// successor row). With resets the last line is "PASS n beats, r resets, e errors, c cut".
 
 `timescale 1ns/1ps
 `include "gradient_word.vh"
@@ -17,16 +26,20 @@
 module tb_gradient;
     parameter MAX_WIDTH = 640;
     parameter DEPTH     = 2097152;              // beats per vector file (2^21)
+    parameter RDEPTH    = 65536;                // reset points
 
     localparam IB       = `QT_VEC_IN_BITS;
     localparam OB       = `QT_VEC_OUT_BITS;
+    // Reset points: {in_beat[31:0], out_beat[31:0], errors[31:0]} (hw_model/vector_format.h).
+    localparam RB       = 96;
     localparam IDLE_MAX = 8 * MAX_WIDTH + 1000; // clocks without a handshake before failing
     localparam DRAIN    = 4 * MAX_WIDTH + 100;  // clocks watched for extra beats at the end
 
     reg [IB-1:0]      in_mem  [0:DEPTH-1];
     reg [OB-1:0]      out_mem [0:DEPTH-1];
-    reg [8*1024-1:0]  in_file, out_file;
-    integer           nin, nout, nerr, seed, stall, corrupt;
+    reg [RB-1:0]      rs_mem  [0:RDEPTH-1];
+    reg [8*1024-1:0]  in_file, out_file, rs_file;
+    integer           nin, nout, nerr, seed, stall, corrupt, nres;
 
     // ---------------------------------------------------------------- DUT
     reg         clk = 1'b0;
@@ -51,7 +64,7 @@ module tb_gradient;
         .m_tready(m_tready), .error(error));
 
     // ---------------------------------------------------------------- stimulus randomness
-    reg [31:0] rng_in, rng_out;
+    reg [31:0] rng_in, rng_out, rng_rst;
 
     function [31:0] xorshift32;
         input [31:0] v;
@@ -70,6 +83,17 @@ module tb_gradient;
     integer idle;                // clocks since the last handshake on either side
     integer drain;               // clocks since the last expected beat was seen
     reg     done;
+
+    // Resets: rs_mem[ridx] is the next one; the expected beats before seg_end belong to the
+    // current segment.
+    integer ridx, seg_end;
+    integer quiet;               // > 0: input stopped before reset ridx, clocks left
+    integer rclk;                // clocks of rst left
+    integer got;                 // output beats received
+    integer cut;                 // expected beats the block did not emit before a reset took it
+    integer r_prev_in, r_prev_out, r_prev_err, k;
+    reg     after_rst;           // no beat received since the last reset
+    reg [RB-1:0] rs;
 
     // Expected-output framing: position of beat oidx.
     integer ef, ex, ey, ew;      // frame (first is 0), column, row, width of that frame
@@ -94,8 +118,15 @@ module tb_gradient;
         if (!$value$plusargs("seed=%d", seed))    seed = 1;
         if (!$value$plusargs("stall=%d", stall))  stall = 0;
         if (!$value$plusargs("corrupt=%d", corrupt)) corrupt = -1;
+        nres = 0;
+        if ($value$plusargs("resets=%s", rs_file)) begin
+            if (!$value$plusargs("nresets=%d", nres))
+                $fatal(1, "tb_gradient: +resets=FILE needs +nresets=N");
+        end
         if (nin < 0 || nin > DEPTH || nout < 0 || nout > DEPTH)
             $fatal(1, "tb_gradient: +nin/+nout must be 0..%0d", DEPTH);
+        if (nres < 0 || nres > RDEPTH)
+            $fatal(1, "tb_gradient: +nresets must be 0..%0d", RDEPTH);
 
         if (nin > 0) begin
             in_mem[nin - 1] = {IB{1'bx}};
@@ -109,13 +140,40 @@ module tb_gradient;
             if (^out_mem[nout - 1] === 1'bx)
                 $fatal(1, "tb_gradient: %0s has fewer than %0d beats", out_file, nout);
         end
+        if (nres > 0) begin
+            rs_mem[nres - 1] = {RB{1'bx}};
+            $readmemh(rs_file, rs_mem, 0, nres - 1);
+            if (^rs_mem[nres - 1] === 1'bx)
+                $fatal(1, "tb_gradient: %0s has fewer than %0d reset points", rs_file, nres);
+            // The points must be in stream order, within the files, and every non-empty
+            // segment must begin with a start of frame.
+            r_prev_in = 0; r_prev_out = 0; r_prev_err = 0;
+            for (k = 0; k < nres; k = k + 1) begin
+                rs = rs_mem[k];
+                if (rs[95:64] < r_prev_in || rs[95:64] > nin || rs[63:32] < r_prev_out ||
+                    rs[63:32] > nout || rs[31:0] < r_prev_err || rs[31:0] > nerr)
+                    $fatal(1, "tb_gradient: reset point %0d (%h) out of order or range", k, rs);
+                r_prev_in = rs[95:64]; r_prev_out = rs[63:32]; r_prev_err = rs[31:0];
+            end
+        end
+        for (k = 0; k < nres; k = k + 1) begin
+            rs = rs_mem[k];
+            if (rs[63:32] < nout && out_mem[rs[63:32]][`QT_VEC_OUT_TUSER_BIT] !== 1'b1 &&
+                (k + 1 == nres || rs_mem[k + 1][63:32] != rs[63:32]))
+                $fatal(1, "tb_gradient: expected beat %0d after reset %0d is no start of frame",
+                       rs[63:32], k);
+        end
         if (corrupt >= 0 && corrupt < nout)
             out_mem[corrupt][0] = ~out_mem[corrupt][0];
 
         rng_in  = xorshift32(32'h9e3779b9 ^ seed);
         rng_out = xorshift32(32'h7f4a7c15 ^ (seed * 3));
+        rng_rst = xorshift32(32'h2545f491 ^ (seed * 5));
         if (rng_in == 0)  rng_in  = 32'h1;
         if (rng_out == 0) rng_out = 32'h2;
+        if (rng_rst == 0) rng_rst = 32'h3;
+        ridx = 0; quiet = 0; rclk = 0; got = 0; cut = 0; after_rst = 1'b0;
+        seg_end = nres > 0 ? rs_mem[0][63:32] : nout;
 
         cyc = 0; iidx = 0; oidx = 0; err_count = 0; idle = 0; drain = 0; done = 1'b0;
         ef = -1; ex = 0; ey = 0; ew = 0;
@@ -157,7 +215,15 @@ module tb_gradient;
             end
             if (!(s_tvalid && !s_tready)) begin         // a pending beat must be held
                 rng_in = xorshift32(rng_in);
-                if (iidx < nin && (rng_in % 100) >= stall) begin
+                if (quiet == 0 && ridx < nres && iidx == rs_mem[ridx][95:64]) begin
+                    // Reset point: stop the input, let the error pulses land.
+                    rng_rst = xorshift32(rng_rst);
+                    if (rng_rst[31:29] == 3'd0)
+                        quiet = 4 + rng_rst % (2 * MAX_WIDTH);
+                    else
+                        quiet = 4 + rng_rst % 16;
+                end
+                if (quiet == 0 && iidx < nin && (rng_in % 100) >= stall) begin
                     ib = in_mem[iidx];
                     s_tvalid <= 1'b1;
                     s_tdata  <= ib[7:0];
@@ -176,6 +242,11 @@ module tb_gradient;
             if (m_tvalid && m_tready) begin
                 idle     = 0;
                 got_beat = {m_tlast, m_tuser, m_tdata};
+                if (oidx >= seg_end && ridx < nres) begin
+                    $display("EXTRA beat=%0d got=%h (the segment before reset %0d ends at beat %0d)",
+                             oidx, got_beat, ridx, seg_end);
+                    $fatal(1, "tb_gradient: more output beats before reset %0d than expected", ridx);
+                end
                 if (oidx >= nout) begin
                     $display("EXTRA beat=%0d got=%h", oidx, got_beat);
                     $fatal(1, "tb_gradient: more than %0d output beats", nout);
@@ -187,8 +258,14 @@ module tb_gradient;
                 if (got_beat !== exp_beat) begin
                     $display("MISMATCH beat=%0d frame=%0d x=%0d y=%0d expected=%h got=%h",
                              oidx, ef, ex, ey, exp_beat, got_beat);
+                    if (nres > 0 && after_rst)
+                        $display("  the first beat after reset %0d", ridx - 1);
+                    else if (nres > 0)
+                        $display("  in the segment before reset %0d", ridx);
                     $fatal(1, "tb_gradient: output differs from %0s", out_file);
                 end
+                after_rst = 1'b0;
+                got = got + 1;
 
                 // Latency of interior pixels, committed once the row is known not to be the last.
                 if (ex == 0) begin
@@ -202,7 +279,7 @@ module tb_gradient;
                     end
                     row_has = 1'b0;
                 end
-                if (ey >= 1 && ex >= 1 && ex <= ew - 2 && ex < MAX_WIDTH) begin
+                if (nres == 0 && ey >= 1 && ex >= 1 && ex <= ew - 2 && ex < MAX_WIDTH) begin
                     slot = (ey % 4) * MAX_WIDTH + ex;
                     if (acc_frame[slot] === fin) begin
                         lat = cyc - acc_time[slot];
@@ -223,13 +300,37 @@ module tb_gradient;
             rng_out = xorshift32(rng_out);
             m_tready <= ((rng_out % 100) >= stall);
 
+            // ---- reset point: every error pulse of the segment's beats has been counted
+            // (they come 1 and 2 clocks after the beat); the expected output jumps to the next
+            // segment, whose first beat must be the first the block emits after the reset.
+            if (quiet > 0) begin
+                quiet = quiet - 1;
+                if (quiet == 0) begin
+                    rs = rs_mem[ridx];
+                    if (err_count != rs[31:0])
+                        $fatal(1, "tb_gradient: %0d error pulses before reset %0d, expected %0d",
+                               err_count, ridx, rs[31:0]);
+                    cut = cut + (seg_end - oidx);
+                    for (k = oidx; k < seg_end; k = k + 1)
+                        if (out_mem[k][`QT_VEC_OUT_TUSER_BIT]) ef = ef + 1;
+                    oidx = seg_end;
+                    ridx = ridx + 1;
+                    seg_end = ridx < nres ? rs_mem[ridx][63:32] : nout;
+                    rng_rst = xorshift32(rng_rst);
+                    rclk = 1 + rng_rst % 8;
+                    rst <= 1'b1;
+                    after_rst = 1'b1;
+                    idle = 0;
+                end
+            end
+
             // ---- completion and liveness
-            if (iidx >= nin && oidx >= nout) begin
+            if (iidx >= nin && oidx >= nout && ridx >= nres && quiet == 0) begin
                 drain = drain + 1;
                 if (drain > DRAIN) begin
                     if (err_count != nerr)
                         $fatal(1, "tb_gradient: %0d error pulses, expected %0d", err_count, nerr);
-                    if (stall == 0) begin
+                    if (stall == 0 && nres == 0) begin
                         if (lat_min >= 0 && !lat_mixed)
                             $display("LATENCY min=%0d max=%0d width=%0d (width + %0d..%0d)",
                                      lat_min, lat_max, lat_w, ex_min, ex_max);
@@ -239,7 +340,11 @@ module tb_gradient;
                         else
                             $display("LATENCY none (no interior pixels)");
                     end
-                    $display("PASS %0d beats", oidx);
+                    if (nres > 0)
+                        $display("PASS %0d beats, %0d resets, %0d errors, %0d cut", got, nres,
+                                 err_count, cut);
+                    else
+                        $display("PASS %0d beats", oidx);
                     done = 1'b1;
                     $finish;
                 end
@@ -255,6 +360,10 @@ module tb_gradient;
                 end
                 $fatal(1, "tb_gradient: no handshake for %0d clocks", IDLE_MAX);
             end
+        end else if (rst && rclk > 0) begin             // a reset point's rst: 1..8 clocks
+            rclk = rclk - 1;
+            if (rclk == 0)
+                rst <= 1'b0;
         end
     end
 endmodule

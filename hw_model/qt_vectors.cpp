@@ -6,7 +6,11 @@
 //   qt_vectors --check ROOT            exit 1 unless every committed file equals a fresh generation
 //   qt_vectors --direction-table FILE  expected direction bin of every (gx, gy), gx outer, gy inner,
 //                                      -255..255 each, one hex digit per line (hdl/tb_direction.v)
+//   qt_vectors --soak SEED PIXELS PREFIX  a soak stream (docs/gradient.md, "Soak") of at least
+//                                      PIXELS input beats: PREFIX.in.hex, PREFIX.out.hex,
+//                                      PREFIX.resets.hex; prints its counts on one line
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -15,6 +19,7 @@
 #include "gradient_cases.h"
 #include "gradient_model.h"
 #include "chain_cases.h"
+#include "soak_stream.h"
 
 namespace {
 
@@ -105,15 +110,66 @@ int direction_table(const std::string& path) {
     return 0;
 }
 
+bool parse_count(const char* text, uint64_t& value) {
+    char* end = nullptr;
+    if (!*text || *text == '-') return false;
+    value = std::strtoull(text, &end, 10);
+    return *end == '\0';
+}
+
+// One line of name=value counts, for scripts (hdl/run_soak.cmake, bench.sh hdl-soak).
+int soak(const char* seed_text, const char* pixels_text, const std::string& prefix) {
+    using namespace qt::vec;
+    uint64_t seed = 0, pixels = 0;
+    if (!parse_count(seed_text, seed) || !parse_count(pixels_text, pixels) || pixels == 0 ||
+        pixels > 100000000) {
+        std::fprintf(stderr, "qt_vectors --soak: SEED must be an unsigned integer and PIXELS "
+                             "1..100000000\n");
+        return 2;
+    }
+    const SoakStream s = make_soak_stream(seed, pixels, kVectorMaxWidth);
+    const std::pair<const char*, std::string> files[] = {
+        {".in.hex", format_in(s.in)}, {".out.hex", format_out(s.out)},
+        {".resets.hex", format_resets(s.resets)}};
+    std::vector<ResetPoint> back;
+    std::string error;
+    if (!parse_resets(files[2].second, back, error) || back != s.resets) {
+        std::fprintf(stderr, "qt_vectors --soak: reset points do not read back: %s\n", error.c_str());
+        return 1;
+    }
+    for (const auto& [suffix, text] : files) {
+        std::ofstream f(prefix + suffix, std::ios::binary);
+        if (!(f << text)) {
+            std::fprintf(stderr, "qt_vectors: cannot write %s%s\n", prefix.c_str(), suffix);
+            return 1;
+        }
+    }
+    int faults = 0;
+    std::string kinds;
+    for (int k = 0; k < kSoakFaultKinds; ++k) {
+        faults += s.faults[k];
+        kinds += std::string(" ") + soak_fault_name(static_cast<SoakFault>(k)) + "=" +
+                 std::to_string(s.faults[k]);
+    }
+    std::printf("soak seed=%llu max_width=%d in_beats=%zu out_beats=%zu errors=%d resets=%zu "
+                "pixels=%llu frames=%d clean_frames=%d faults=%d%s\n",
+                static_cast<unsigned long long>(seed), kVectorMaxWidth, s.in.size(), s.out.size(),
+                s.errors, s.resets.size(), static_cast<unsigned long long>(s.pixels), s.frames,
+                s.clean_frames, faults, kinds.c_str());
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc == 5 && std::string(argv[1]) == "--soak") return soak(argv[2], argv[3], argv[4]);
     if (argc == 3) {
         const std::string mode = argv[1];
         if (mode == "--write") return write_all(argv[2]);
         if (mode == "--check") return check_all(argv[2]);
         if (mode == "--direction-table") return direction_table(argv[2]);
     }
-    std::fprintf(stderr, "usage: qt_vectors --write ROOT | --check ROOT | --direction-table FILE\n");
+    std::fprintf(stderr, "usage: qt_vectors --write ROOT | --check ROOT | --direction-table FILE | "
+                         "--soak SEED PIXELS PREFIX\n");
     return 2;
 }

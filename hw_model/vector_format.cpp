@@ -107,6 +107,48 @@ bool parse_out(const std::string& text, std::vector<OutBeat>& beats, std::string
     return true;
 }
 
+std::string format_resets(const std::vector<ResetPoint>& resets) {
+    constexpr int field = kResetFieldBits / 4;
+    static_assert(kResetInLsb == 2 * kResetFieldBits && kResetOutLsb == kResetFieldBits &&
+                      kResetErrorsLsb == 0 && kResetBits == 3 * kResetFieldBits,
+                  "fields written most significant first");
+    std::string s;
+    s.reserve(resets.size() * (kResetHexDigits + 1));
+    for (const ResetPoint& r : resets) {
+        s += hex(r.in_beat, field);
+        s += hex(r.out_beat, field);
+        s += hex(r.errors, field);
+        s += '\n';
+    }
+    return s;
+}
+
+bool parse_resets(const std::string& text, std::vector<ResetPoint>& resets, std::string& error) {
+    constexpr size_t field = kResetFieldBits / 4;
+    static_assert(kResetHexDigits == 3 * field, "three 32-bit fields");
+    resets.clear();
+    std::istringstream in(text);
+    std::string line;
+    size_t number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        std::vector<uint64_t> v;
+        std::string part_error;
+        // Each line is three fixed-width fields; parse them as three one-line texts.
+        if (line.size() != static_cast<size_t>(kResetHexDigits) ||
+            !parse_hex_lines(line.substr(0, field) + "\n" + line.substr(field, field) + "\n" +
+                                 line.substr(2 * field, field) + "\n",
+                             static_cast<int>(field), v, part_error)) {
+            error = "resets line " + std::to_string(number) + ": expected " +
+                    std::to_string(kResetHexDigits) + " lower-case hex digits, got '" + line + "'";
+            return false;
+        }
+        resets.push_back(ResetPoint{static_cast<uint32_t>(v[0]), static_cast<uint32_t>(v[1]),
+                                    static_cast<uint32_t>(v[2])});
+    }
+    return true;
+}
+
 std::string manifest_header() {
     return "# Golden vectors of the gradient block, written by qt_vectors (hw_model/).\n"
            "# Format: docs/gradient.md. Regenerate: build/host/hw_model/qt_vectors --write .\n"

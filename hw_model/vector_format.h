@@ -2,6 +2,8 @@
 //   <case>.in.hex   one input beat per line, 7 hex digits: {height[15:0], tlast, tuser, pixel}
 //   <case>.out.hex  one output beat per line, 9 hex digits: {tlast, tuser, word[31:0]}
 //   manifest.txt    name sizes frames seed in_beats out_beats errors max_width fnv1a64
+//   <prefix>.resets.hex  (soak streams) one reset point per line, 24 hex digits:
+//                   {in_beat[31:0], out_beat[31:0], errors[31:0]}
 #pragma once
 #include <stdint.h>
 
@@ -33,6 +35,23 @@ constexpr int kInBits = 26, kInHexDigits = 7;
 constexpr int kOutTuserBit = 32, kOutTlastBit = 33;
 constexpr int kOutBits = 34, kOutHexDigits = 9;
 
+// A reset of the block inside a stream (the soak's .resets.hex): rst is asserted once the beats
+// before `in_beat` have been accepted and before beat `in_beat` is offered. The block loses its
+// state: the output beats [previous reset's out_beat, out_beat) are those of the segment before
+// (the block may emit any prefix of them before the reset takes it), and the first beat it emits
+// after the reset must be beat `out_beat`, the first of the next segment (a start of frame).
+struct ResetPoint {
+    uint32_t in_beat = 0;   // index into .in.hex; resets are in stream order, equal ones allowed
+    uint32_t out_beat = 0;  // index into .out.hex of the next segment's first expected beat
+    uint32_t errors = 0;    // error pulses of all input beats before in_beat, from the start
+    friend bool operator==(const ResetPoint& a, const ResetPoint& b) {
+        return a.in_beat == b.in_beat && a.out_beat == b.out_beat && a.errors == b.errors;
+    }
+};
+
+constexpr int kResetInLsb = 64, kResetOutLsb = 32, kResetErrorsLsb = 0, kResetFieldBits = 32;
+constexpr int kResetBits = 96, kResetHexDigits = 24;
+
 struct ManifestEntry {
     std::string name;
     std::string sizes;  // "WxH" per frame joined by '+'
@@ -47,12 +66,14 @@ struct ManifestEntry {
 
 std::string format_in(const std::vector<InBeat>& beats);
 std::string format_out(const std::vector<OutBeat>& beats);
+std::string format_resets(const std::vector<ResetPoint>& resets);
 std::string format_manifest_line(const ManifestEntry& e);
 std::string manifest_header();
 
 // Parsers return false and set `error` to a one-line reason on malformed text.
 bool parse_in(const std::string& text, std::vector<InBeat>& beats, std::string& error);
 bool parse_out(const std::string& text, std::vector<OutBeat>& beats, std::string& error);
+bool parse_resets(const std::string& text, std::vector<ResetPoint>& resets, std::string& error);
 bool parse_manifest(const std::string& text, std::vector<ManifestEntry>& entries,
                     std::string& error);
 
