@@ -45,11 +45,18 @@ public:
     static constexpr uint32_t ram_bytes() { return sizeof(LineDetector); }
     static constexpr uint16_t max_lines() { return MaxLines; }
 
+    // bad_size (and no frame: rows and finish() get not_in_frame) when a dimension is 0 or
+    // above capacity; previous_frame_incomplete when rows of the frame in progress were missing
+    // (the new frame has started all the same).
     Status begin_frame(uint16_t width, uint16_t height, const LineParams& params) {
         params_ = params;
         stats_ = LineStats{};
         segment_count_ = line_count_ = 0;
         width_ = height_ = 0;  // until the frame has begun: finish() then says not_in_frame
+        // Rows missing from the open frame: the edge stage knows, as both paths feed it (the
+        // gradient stage is never fed by push_gradient_row, so it cannot tell).
+        const bool abandoned = open_ && edge_stage_.in_frame();
+        open_ = false;
         if (height > MaxHeight) return Status::bad_size;
         edges_view_ = edges_.view();
         gradient_.kernel.edge_threshold = params.edge_threshold;
@@ -59,35 +66,42 @@ public:
         if (e != Status::ok) return e;
         width_ = width;
         height_ = height;
-        return s;
+        open_ = true;
+        return abandoned ? Status::previous_frame_incomplete : Status::ok;
     }
 
-    // A camera row (grey levels).
+    // A camera row (grey levels). A refused row (bad_row_length) abandons the frame: later rows
+    // and finish() get not_in_frame until the next begin_frame().
     Status push_row(const uint8_t* pixels, uint16_t length) {
+        // The edge stage, fed by both paths, leaves the frame with its last row: a camera row
+        // after a frame of gradient words is a row after the last one too.
+        if (!open_ || !edge_stage_.in_frame()) return Status::not_in_frame;
         Status edge_status = Status::ok;
         const Status s = gradient_.push_row(pixels, length, [&](uint16_t, const uint16_t* packed, uint16_t n) {
             const Status e = edge_stage_.push_packed_row(packed, n);
             if (e != Status::ok) edge_status = e;
         });
-        return s != Status::ok ? s : edge_status;
+        return row_status(s != Status::ok ? s : edge_status);
     }
 
-    // A row of gradient words (from the FPGA block), instead of push_row.
+    // A row of gradient words (from the FPGA block), instead of push_row; the same statuses.
     Status push_gradient_row(const gradient_word* words, uint16_t width) {
-        return edge_stage_.push_row(words, width);
+        if (!open_) return Status::not_in_frame;
+        return row_status(edge_stage_.push_row(words, width));
     }
 
-    // After the last row: PPHT and clustering. not_in_frame if rows are missing;
-    // capacity_exceeded when edges, segments or clusters were dropped or PPHT ran out of its
-    // walk budget (the lines found are valid; stats() says what was cut).
+    // After the last row: PPHT and clustering. not_in_frame if rows are missing, the frame
+    // was abandoned or already finished; capacity_exceeded when edges, segments or clusters were dropped or PPHT
+    // ran out of its walk budget (the lines found are valid; stats() says what was cut).
     Status finish() {
         return finish([](FinishStage) {});
     }
     // The same, calling mark(stage) as each stage ends (for timing them).
     template <class Mark>
     Status finish(Mark&& mark) {
-        if (edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
+        if (!open_ || edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
             return Status::not_in_frame;
+        open_ = false;  // once per frame: PPHT consumes the edge list
         stats_.edges = edges_view_.size();
         stats_.edges_dropped = edges_view_.dropped();
         const Status h = hough_segments(edges_view_, width_, height_, params_.hough, hough_.view(),
@@ -123,6 +137,13 @@ public:
     }
 
 private:
+    // not_in_frame (a row after the last one) leaves the frame as it was; any other refusal
+    // abandons it.
+    Status row_status(Status s) {
+        if (s != Status::ok && s != Status::not_in_frame) open_ = false;
+        return s;
+    }
+
     GradientStage<MaxWidth, NmsRowKernel> gradient_;  // pixels -> packed NMS rows, no words
     EdgeStage<MaxWidth> edge_stage_;
     EdgeListStorage<EdgeCapacity, MaxHeight> edges_;
@@ -135,6 +156,7 @@ private:
     LineParams params_;
     LineStats stats_;
     uint16_t width_ = 0, height_ = 0, segment_count_ = 0, line_count_ = 0;
+    bool open_ = false;  // a frame was begun and none of its rows refused
 };
 
 // QVGA: 320 × 240, 4096 edge points, 2° × 2 px accumulator, 64 segments, 32 lines.

@@ -107,6 +107,13 @@ public:
     Segment line() const;
     uint8_t flags() const;
 
+    // Read-only views of the filters, for checking their covariances (tests, soak runs):
+    // closest_points uses point_filter(0 .. params().filters − 1), turn the other two.
+    const LineTrackerParams& params() const { return params_; }
+    const PointKalman& point_filter(int i) const { return point_[i]; }
+    const KalmanAxis& angle_filter() const { return angle_; }
+    const TurnKalman& offset_filter() const { return offset_; }
+
 private:
     int farthest_filter() const;  // the filter whose point lies farthest from its origin
     Segment polar_line(int i) const;

@@ -134,9 +134,10 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
         if (!corners_of(predicted, params_.shape, corners)) {
             lost = lost_shape;
         } else {
-            // Association: each side takes the longest gated line; a line serves one side.
+            // Association: each side takes the longest gated line; a line serves one side. A
+            // frame without lines leaves every side unmatched (and counted in missed_).
             uint32_t used[8] = {};  // bit set of line indices < 256
-            for (int i = 0; i < 4 && n > 0; ++i) {
+            for (int i = 0; i < 4; ++i) {
                 const SinCos normal = sin_cos(predicted[i].theta);
                 const Point16 a = corners[i], b = corners[(i + 1) % 4];
                 int best = -1;

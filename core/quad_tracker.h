@@ -101,6 +101,9 @@ public:
 
     const QuadTrackStats& stats() const { return stats_; }
     bool tracking() const { return active_; }
+    // Side i's line tracker, in the order of the quadrangle the track started from (read-only,
+    // for checking the filters' covariances).
+    const LineTracker& side(int i) const { return sides_[i]; }
 
 private:
     TrackedQuad start(const Segment* lines, const Quad& quad);

@@ -67,12 +67,13 @@ public:
         return Status::ok;
     }
 
+    // bad_size (and no frame: rows and finish() get not_in_frame) when a dimension is 0 or
+    // above capacity; previous_frame_incomplete when rows of the frame in progress were missing
+    // (the new frame has started all the same). A refused or torn frame leaves no trace: the
+    // next complete frame is matched to the last complete one and the track is as it was.
     Status begin_frame(uint16_t width, uint16_t height) {
-        if (have_previous_ && (width != prev_.width || height != prev_.height)) {
-            // Another size: the previous frame's corners cannot be matched; the track goes on
-            // without a homography this frame.
-            have_previous_ = false;
-        }
+        const bool abandoned = open_ && y_ < height_;
+        open_ = false;
         Status s = gradient_.begin_frame(width, height);
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
         const Status h = harris_.begin_frame(width, height, config_.harris);
@@ -80,6 +81,7 @@ public:
         width_ = width;
         height_ = height;
         y_ = 0;
+        open_ = true;
         if (pending_target_) {
             capture_.begin(roi_x_, roi_y_, roi_w_, roi_h_, width, height);
         } else if (tracking_) {
@@ -93,15 +95,18 @@ public:
         } else {
             capture_.begin(0, 0, 0, 0, width, height);
         }
-        return s;
+        return abandoned ? Status::previous_frame_incomplete : Status::ok;
     }
 
     Status push_row(const uint8_t* pixels, uint16_t length) {
-        if (!gradient_.in_frame()) return Status::not_in_frame;
-        // A row of the wrong length: the Harris detector refuses it and abandons its frame;
-        // finish() then sees the rows missing.
+        if (!open_ || !gradient_.in_frame()) return Status::not_in_frame;
+        // A row of the wrong length: the Harris detector refuses it and abandons its frame, and
+        // so does the pipeline (later rows and finish() get not_in_frame).
         Status s = harris_.push_pixel_row(pixels, length);
-        if (s != Status::ok) return s;
+        if (s != Status::ok) {
+            open_ = false;
+            return s;
+        }
         Status hs = Status::ok;
         s = gradient_.push_row(pixels, length, [&](uint16_t y, const gradient_word* words, uint16_t w) {
             const Status r = harris_.push_gradient_row(y, words, w);
@@ -115,13 +120,15 @@ public:
     // After the last row: corners, homography, tracking.
     Status finish(TargetFrame& out) {
         out = TargetFrame{};
-        if (y_ != height_ || width_ == 0) return Status::not_in_frame;
+        if (!open_ || y_ != height_ || width_ == 0) return Status::not_in_frame;
         const Status hs = harris_.finish();
         if (hs != Status::ok && hs != Status::capacity_exceeded) return hs;
         const Features& cur = harris_.features();
         out.features = cur.count;
         FrameGeometry g;
-        if (have_previous_) {
+        // Another size than the previous frame's: its corners cannot be matched; the track goes
+        // on without a homography this frame.
+        if (have_previous_ && prev_.width == width_ && prev_.height == height_) {
             FrameHomographyConfig gc = config_.geometry;
             // Corners move with the camera: look for each where the last homography sends it.
             float ex, ey;
@@ -226,6 +233,7 @@ private:
     Homography last_h_;
     uint16_t width_ = 0, height_ = 0, y_ = 0;
     bool have_previous_ = false;
+    bool open_ = false;  // a frame was begun and none of its rows refused
     bool tracking_ = false;
     bool pending_target_ = false;
     int32_t offset_x_q8_ = 0, offset_y_q8_ = 0;  // target centre − template centre, 1/256 px
