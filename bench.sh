@@ -18,7 +18,16 @@
 #   target-host    the filtering-geometry paper's comparison on generated airborne sequences:
 #                  template only, filter only, homography only, fused (with and without Table
 #                  III's reset); error tables and SVG charts in bench_out/target
+#   soak           the quadrangle tracker (10^6 generated frames, 30 % of sides missed, bursts of
+#                  total loss) and the target tracker (10^5 frames of spells out of view) on seeds
+#                  1-3, built with ASan + UBSan (host-sanitize): recovery, covariance, lost events;
+#                  other lengths: BENCH_SOAK_FLAGS='--frames N --seeds K' (bench_soak --help)
+#   fuzz           libFuzzer targets (clang, ASan + UBSan; tests/fuzz/run_fuzzers.sh) from a copy of
+#                  the committed corpus: image readers and CLI parser 10^6 executions, the pipeline
+#                  10^5 (QT_FUZZ_RUNS_<TARGET> to change), fixed seed; executions, findings, coverage
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
+#   hdl-soak       the gradient block against its model on QT_SOAK_SEEDS (10) soak streams of
+#                  QT_SOAK_PIXELS (10^6, at most ~1.9*10^6) pixels: faults, resets, 30 % stalls
 #   fpga           iCE40 UP5K and HX8K logic cells, block RAMs and Fmax (yosys + nextpnr)
 # With no NAME, runs them all.
 set -euo pipefail
@@ -26,7 +35,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host homography-host target-host gradient-m4 budgets budgets-m3 track-m4 hdl-latency fpga)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host homography-host target-host soak gradient-m4 budgets budgets-m3 track-m4 hdl-latency hdl-soak fpga fuzz)
 
 host_build() {
     ensure_packages cmake make g++ catch2 iverilog
@@ -75,9 +84,30 @@ for name in "${names[@]}"; do
         target-host)
             host_build bench_target
             ./build/host/platform/bench_target --out bench_out/target ;;
+        soak)
+            ensure_packages cmake make g++ catch2
+            cmake --preset host-sanitize >/dev/null
+            cmake --build --preset host-sanitize -j"$jobs" --target bench_soak >/dev/null
+            # shellcheck disable=SC2086  # the flags are words
+            ./build/host-sanitize/platform/bench_soak ${BENCH_SOAK_FLAGS:-} ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;
+        hdl-soak)
+            host_build qt_vectors hdl_benches
+            for ((s = 101; s <= 100 + ${QT_SOAK_SEEDS:-10}; ++s)); do
+                cmake -DQT_VECTORS=build/host/hw_model/qt_vectors -DVVP="$(command -v vvp)" \
+                    -DBENCH=build/host/hdl/tb_gradient_w640.vvp -DSEED="$s" -DPIXELS="${QT_SOAK_PIXELS:-1000000}" \
+                    -DPREFIX=build/host/hdl/soak/bench -P hdl/run_soak.cmake 2>&1 |
+                    grep -E -A1 --no-group-separator 'mismatches=|MISMATCH|EXTRA|MISSING|FATAL|Error' || true
+            done | awk -v seeds="${QT_SOAK_SEEDS:-10}" '{ print }
+                /mismatches=/ { n++; if (/mismatches=FAIL/) bad++; for (i = 2; i <= NF; i++) { split($i, kv, "="); t[kv[1]] += kv[2] } }
+                END { printf "total seeds=%d pixels=%d frames=%d resets=%d faults=%d errors=%d checked=%d cut=%d failed=%d seconds=%d\n",
+                      n, t["pixels"], t["frames"], t["resets"], t["faults"], t["errors"], t["checked"], t["cut"], bad + seeds - n, t["seconds"]
+                      exit (n != seeds || bad > 0) }' ;;
+        fuzz)
+            ensure_packages cmake make clang libclang-rt-14-dev
+            bash tests/fuzz/run_fuzzers.sh ;;
         fpga)
             ensure_packages yosys nextpnr-ice40 fpga-icestorm
             bash hdl/synth/ice40.sh ;;

@@ -55,8 +55,8 @@ template <uint8_t MaxSide>
 bool cut_template(const PixelRegion& region, int32_t x, int32_t y, uint8_t w, uint8_t h,
                   TargetTemplate<MaxSide>& out) {
     if (w < 1 || h < 1 || w > MaxSide || h > MaxSide || x < region.x0 || y < region.y0 ||
-        x + w > region.x0 + region.w || y + h > region.y0 + region.h)
-        return false;
+        int64_t{x} + w > int64_t{region.x0} + region.w || int64_t{y} + h > int64_t{region.y0} + region.h)
+        return false;  // (64-bit sums: x, y may be anywhere in int32)
     out.w = w;
     out.h = h;
     for (uint8_t r = 0; r < h; ++r)
@@ -74,17 +74,21 @@ public:
     // Keeps [x0, x0 + w) × [y0, y0 + h) clipped to the frame (and to MaxW × MaxH around the
     // requested box's centre). An empty intersection keeps nothing.
     void begin(int32_t x0, int32_t y0, int32_t w, int32_t h, uint16_t frame_w, uint16_t frame_h) {
-        if (w > MaxW) { x0 += (w - MaxW) / 2; w = MaxW; }
-        if (h > MaxH) { y0 += (h - MaxH) / 2; h = MaxH; }
-        int32_t x1 = x0 + w, y1 = y0 + h;
-        if (x0 < 0) x0 = 0;
-        if (y0 < 0) y0 = 0;
-        if (x1 > frame_w) x1 = frame_w;
-        if (y1 > frame_h) y1 = frame_h;
-        region_.x0 = x0;
-        region_.y0 = y0;
-        region_.w = static_cast<uint16_t>(x1 > x0 ? x1 - x0 : 0);
-        region_.h = static_cast<uint16_t>(y1 > y0 && region_.w > 0 ? y1 - y0 : 0);
+        // In 64 bits: the box may lie anywhere in int32 (TargetPipeline::set_target takes any
+        // position), and its far ends beyond.
+        int64_t left = x0, top = y0, width = w, height = h;
+        if (width > MaxW) { left += (width - MaxW) / 2; width = MaxW; }
+        if (height > MaxH) { top += (height - MaxH) / 2; height = MaxH; }
+        int64_t right = left + width, bottom = top + height;
+        if (left < 0) left = 0;
+        if (top < 0) top = 0;
+        if (right > frame_w) right = frame_w;
+        if (bottom > frame_h) bottom = frame_h;
+        if (right <= left || bottom <= top) left = top = right = bottom = 0;  // empty: keeps nothing
+        region_.x0 = static_cast<int32_t>(left);
+        region_.y0 = static_cast<int32_t>(top);
+        region_.w = static_cast<uint16_t>(right - left);
+        region_.h = static_cast<uint16_t>(bottom - top);
         region_.stride = MaxW;
         region_.pixels = pixels_;
     }
