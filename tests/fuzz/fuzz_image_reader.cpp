@@ -36,13 +36,12 @@ std::string pick_temp_path() {
     return dir + "/qt_fuzz_image_reader_" + std::to_string(static_cast<long>(getpid())) + ".bin";
 }
 
-// One file per process, rewritten for every input, removed at exit.
+// One file per process, rewritten for every input and removed after it (libFuzzer ends the
+// process without running atexit handlers).
 const std::string& temp_path() {
     static const std::string path = pick_temp_path();
     return path;
 }
-
-void remove_temp() { std::remove(temp_path().c_str()); }
 
 void write_file(const std::string& path, const uint8_t* data, size_t size) {
     std::FILE* f = std::fopen(path.c_str(), "wb");
@@ -68,14 +67,8 @@ bool sane(const GreyImage& img) {
            img.pixels.size() == static_cast<size_t>(img.width) * static_cast<size_t>(img.height);
 }
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    static const bool registered = std::atexit(remove_temp) == 0;
-    (void)registered;
-    const std::string& path = temp_path();
-    write_file(path, data, size);
-
+// The invariants above, for the file at `path`.
+void check(const std::string& path) {
     // read_image: one frame, or one line about the file with `out` untouched.
     GreyImage image(3, 2, 7);
     std::string error;
@@ -94,7 +87,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         QT_FUZZ_CHECK(one_line_about(open_error, path));
         QT_FUZZ_CHECK(!ok);              // a file read_image accepts opens as a sequence
         QT_FUZZ_CHECK(open_error == error);  // and a header it refuses is refused alike
-        return 0;
+        return;
     }
     int frames = 0;
     for (;;) {
@@ -128,5 +121,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         QT_FUZZ_CHECK(source.frames_read() == frames);
         break;
     }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string& path = temp_path();
+    write_file(path, data, size);
+    check(path);
+    std::remove(path.c_str());
     return 0;
 }
