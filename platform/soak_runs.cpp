@@ -6,7 +6,9 @@
 #include <utility>
 #include <vector>
 
+#include "det_math.h"
 #include "homography.h"
+#include "line_motion.h"
 #include "prng.h"
 #include "quad_detector.h"
 #include "quad_tracker.h"
@@ -72,33 +74,16 @@ struct P {
     double x, y;
 };
 
-q16_16 q16(double v) { return q16_16::from_raw(std::llround(v * 65536.0)); }
 double val(q16_16 v) { return v.raw / 65536.0; }
 
-// The segment from a to b as the lines stage reports it, for a board brighter than its
-// surroundings whose centre is `inside`.
+// The segment from a to b as the lines stage reports it (scene::measured_segment), with 50
+// points and the bright side of a board brighter than its surroundings whose centre is `inside`.
 Segment segment(P a, P b, P inside) {
-    const double len = std::hypot(b.x - a.x, b.y - a.y);
-    double nx = -(b.y - a.y) / len, ny = (b.x - a.x) / len;
-    double rho = nx * a.x + ny * a.y;
-    if (rho < 0) {
-        nx = -nx;
-        ny = -ny;
-        rho = -rho;
-    }
-    double th = std::atan2(ny, nx);
-    if (th < 0) th += 2 * kPi;
-    Segment s{};
-    s.x1 = q16(a.x);
-    s.y1 = q16(a.y);
-    s.x2 = q16(b.x);
-    s.y2 = q16(b.y);
-    s.rho = q16(rho);
-    s.theta = static_cast<angle_t>(static_cast<uint64_t>(std::llround(th / (2 * kPi) * 4294967296.0)) & 0xFFFFFFFFu);
-    s.cx = q16(rho * nx);
-    s.cy = q16(rho * ny);
+    Segment s = scene::measured_segment({a.x, a.y, b.x, b.y});
+    double sn, cs;
+    scene::det_sincos(s.theta * (2 * kPi / 4294967296.0), sn, cs);
     s.points = 50;
-    s.bright_side = static_cast<int8_t>(nx * inside.x + ny * inside.y - rho > 0 ? 1 : -1);
+    s.bright_side = static_cast<int8_t>(cs * inside.x + sn * inside.y - val(s.rho) > 0 ? 1 : -1);
     return s;
 }
 
