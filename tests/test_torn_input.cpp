@@ -211,21 +211,28 @@ struct GradientAdapter {
     bool meaningful() const { return !emitted.empty(); }
 };
 
-template <bool Words>
-struct LineAdapter {
-    static constexpr const char* name = Words ? "LineDetectorQvga push_gradient_row" : "LineDetectorQvga push_row";
+// Camera rows (push_row) or gradient words (push_gradient_row) into a LineDetector or a
+// BoardDetector: the two share these entry points.
+template <class Detector, class Params, bool Words>
+struct DetectorFeed {
     static constexpr bool stateful = false, has_finish = true;
     static constexpr uint16_t max_w = 320, max_h = 240;
     static constexpr Status after_early_finish = Status::previous_frame_incomplete;
-    std::unique_ptr<LineDetectorQvga> det = std::make_unique<LineDetectorQvga>();
+    std::unique_ptr<Detector> det = std::make_unique<Detector>();
     std::vector<uint8_t> px;
     std::vector<gradient_word> wd;
-    Status begin(uint16_t w, uint16_t h) { return det->begin_frame(w, h, LineParams{}); }
+    Status begin(uint16_t w, uint16_t h) { return det->begin_frame(w, h, Params{}); }
     Status push(const Frame& f, int y, uint16_t len) {
         return Words ? det->push_gradient_row(row_of(f.word_row(y), f.w, len, wd), len)
                      : det->push_row(row_of(f.row(y), f.w, len, px), len);
     }
     Status finish() { return det->finish(); }
+};
+
+template <bool Words>
+struct LineAdapter : DetectorFeed<LineDetectorQvga, LineParams, Words> {
+    static constexpr const char* name = Words ? "LineDetectorQvga push_gradient_row" : "LineDetectorQvga push_row";
+    using DetectorFeed<LineDetectorQvga, LineParams, Words>::det;
     Out output() const {
         Out o;
         add_lines(o, *det);
@@ -236,20 +243,9 @@ struct LineAdapter {
 };
 
 template <bool Words>
-struct BoardAdapter {
+struct BoardAdapter : DetectorFeed<BoardDetectorQvga, BoardParams, Words> {
     static constexpr const char* name = Words ? "BoardDetectorQvga push_gradient_row" : "BoardDetectorQvga push_row";
-    static constexpr bool stateful = false, has_finish = true;
-    static constexpr uint16_t max_w = 320, max_h = 240;
-    static constexpr Status after_early_finish = Status::previous_frame_incomplete;
-    std::unique_ptr<BoardDetectorQvga> det = std::make_unique<BoardDetectorQvga>();
-    std::vector<uint8_t> px;
-    std::vector<gradient_word> wd;
-    Status begin(uint16_t w, uint16_t h) { return det->begin_frame(w, h, BoardParams{}); }
-    Status push(const Frame& f, int y, uint16_t len) {
-        return Words ? det->push_gradient_row(row_of(f.word_row(y), f.w, len, wd), len)
-                     : det->push_row(row_of(f.row(y), f.w, len, px), len);
-    }
-    Status finish() { return det->finish(); }
+    using DetectorFeed<BoardDetectorQvga, BoardParams, Words>::det;
     Out output() const {
         Out o;
         add_lines(o, det->lines());
