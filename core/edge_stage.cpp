@@ -8,6 +8,16 @@
 #include <arm_acle.h>
 #endif
 
+// Targets whose compiler vectorises plain loops (x86-64's SSE2, aarch64's NEON) test blocks of
+// 32 entries for an edge in one vectorised pass; 32-bit microcontrollers, where that pass
+// costs more than it saves, test one entry (or four, with a 64-bit add) at a time. Both give
+// the same rows: the chain test compares the Cortex-M output with the host's byte for byte.
+#if defined(__SSE2__) || defined(__ARM_NEON)
+#define QT_VECTOR_UNIT 1
+#else
+#define QT_VECTOR_UNIT 0
+#endif
+
 namespace qt {
 
 void pack_nms_row(const gradient_word* words, uint16_t width, uint16_t* row) {
@@ -21,25 +31,30 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
                       uint16_t width, uint16_t edge_threshold, uint16_t* row) {
     row[0] = 0;
     row[width + 1] = 0;
-    // The direction only where NMS will read it: most pixels are below the threshold, and the
-    // branch halves the Cortex-M4's instructions per pixel (host time is the same either way).
-    auto pack = [edge_threshold](int32_t gx, int32_t gy) {
-        const uint32_t mag = static_cast<uint32_t>((gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy));
-        return mag >= edge_threshold ? nms_entry(mag, direction_bin(gx, gy)) : static_cast<uint16_t>(mag);
+    auto magnitude = [](int32_t gx, int32_t gy) {
+        return static_cast<uint16_t>((gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy));
     };
-    const int32_t last = width - 1;
+    // The direction only where NMS will read it, where the magnitude reaches the threshold.
+    auto pack = [&](int32_t gx, int32_t gy) {
+        const uint16_t mag = magnitude(gx, gy);
+        return mag >= edge_threshold ? nms_entry(mag, direction_bin(gx, gy)) : mag;
+    };
+    auto gy_at = [above, below](int32_t x) { return static_cast<int32_t>(below[x]) - above[x]; };
+    auto inner = [&](int32_t x) {  // 0 < x < width - 1: no border tests
+        return pack(static_cast<int32_t>(center[x + 1]) - center[x - 1], gy_at(x));
+    };
+    const int32_t last = width - 1;  // borders replicated
     if (width == 1) {
-        row[1] = pack(0, static_cast<int32_t>(below[0]) - above[0]);
+        row[1] = pack(0, gy_at(0));
         return;
     }
-    row[1] = pack(static_cast<int32_t>(center[1]) - center[0], static_cast<int32_t>(below[0]) - above[0]);
-    int32_t x = 1;
+    row[1] = pack(static_cast<int32_t>(center[1]) - center[0], gy_at(0));
+    row[last + 1] = pack(static_cast<int32_t>(center[last]) - center[last - 1], gy_at(last));
 #if defined(__ARM_FEATURE_SIMD32)
     // Cortex-M4/M7 (DSP extension): four pixels per step in byte and half-word lanes, exact
-    // magnitudes; a group with a pixel at or above the threshold goes through pack() below,
-    // so the packed row is the same as the plain loop's (the firmware's chain test compares
-    // its output with the host's byte for byte). About a quarter of the plain loop's
-    // instructions per pixel.
+    // magnitudes; a group with a pixel at or above the threshold goes through pack(). About a
+    // quarter of the plain loop's instructions per pixel.
+    int32_t x = 1;
     if (edge_threshold >= 1) {
         const uint16x2_t below_threshold = (edge_threshold - 1u) * 0x00010001u;
         auto load4 = [](const uint8_t* p) {
@@ -50,9 +65,9 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
         for (; x + 4 <= last; x += 4) {
             const uint8x4_t left = load4(center + x - 1), right = load4(center + x + 1);
             const uint8x4_t up = load4(above + x), down = load4(below + x);
-            const uint8x4_t agx = __uqsub8(right, left) | __uqsub8(left, right);  // |gx|, 4 lanes
-            const uint8x4_t agy = __uqsub8(down, up) | __uqsub8(up, down);        // |gy|
-            const uint16x2_t even = __uadd16(__uxtb16(agx), __uxtb16(agy));       // pixels x, x + 2
+            const uint8x4_t agx = __uqsub8(right, left) | __uqsub8(left, right);      // |gx|, 4 lanes
+            const uint8x4_t agy = __uqsub8(down, up) | __uqsub8(up, down);            // |gy|
+            const uint16x2_t even = __uadd16(__uxtb16(agx), __uxtb16(agy));           // pixels x, x + 2
             const uint16x2_t odd = __uadd16(__uxtb16(agx >> 8), __uxtb16(agy >> 8));  // x + 1, x + 3
             if ((__uqsub16(even, below_threshold) | __uqsub16(odd, below_threshold)) == 0) {
                 const uint32_t first = (even & 0xFFFFu) | (odd << 16), second = (even >> 16) | (odd & 0xFFFF0000u);
@@ -60,17 +75,32 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
                 memcpy(row + x + 3, &second, sizeof second);
                 continue;
             }
-            for (int32_t k = x; k < x + 4; ++k)
-                row[k + 1] = pack(static_cast<int32_t>(center[k + 1]) - center[k - 1],
-                                  static_cast<int32_t>(below[k]) - above[k]);
+            for (int32_t k = x; k < x + 4; ++k) row[k + 1] = inner(k);
         }
     }
+    for (; x < last; ++x) row[x + 1] = inner(x);
+#elif QT_VECTOR_UNIT
+    // Blocks of 32 pixels: the magnitudes, branch-free so that the host compiler vectorises
+    // the loop (pack()'s branch stops it), noting whether any reaches the threshold; then,
+    // only in a block where one does, the directions. Few blocks hold an edge.
+    constexpr int32_t kBlock = 32;
+    const uint16_t bias = static_cast<uint16_t>(0x200u - edge_threshold);
+    int32_t x = 1;
+    for (; x + kBlock <= last; x += kBlock) {
+        uint16_t reached = 0;  // bit 9: a magnitude reached the threshold (nms_row's test)
+        for (int32_t k = x; k < x + kBlock; ++k) {
+            const uint16_t m = magnitude(static_cast<int32_t>(center[k + 1]) - center[k - 1], gy_at(k));
+            row[k + 1] = m;
+            reached |= static_cast<uint16_t>(m + bias);
+        }
+        if ((reached & 0x200u) == 0) continue;
+        for (int32_t k = x; k < x + kBlock; ++k)
+            if (row[k + 1] >= edge_threshold) row[k + 1] = inner(k);
+    }
+    for (; x < last; ++x) row[x + 1] = inner(x);
+#else
+    for (int32_t x = 1; x < last; ++x) row[x + 1] = inner(x);
 #endif
-    for (; x < last; ++x)
-        row[x + 1] = pack(static_cast<int32_t>(center[x + 1]) - center[x - 1],
-                          static_cast<int32_t>(below[x]) - above[x]);
-    row[last + 1] = pack(static_cast<int32_t>(center[last]) - center[last - 1],
-                         static_cast<int32_t>(below[last]) - above[last]);
 }
 
 namespace {
@@ -116,12 +146,23 @@ inline void nms_pixel(const uint16_t* a, const uint16_t* c, const uint16_t* b, u
 void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t width, uint16_t y,
              uint16_t edge_threshold, EdgeList& out) {
     out.begin_row(y);
-    // Most pixels are below the threshold: test four at a time. Each 16-bit lane holds a 9-bit
-    // magnitude; adding 0x200 - threshold carries into bit 9 exactly when it reaches the
-    // threshold, and never into the next lane (at most 0x1FF + 0x1FF < 0x400).
+    // Most pixels are below the threshold: skip them a group at a time. Bit 9 of
+    // m + 0x200 - threshold is set exactly when the 9-bit magnitude m reaches the threshold
+    // (1..510; outside that range it may be set needlessly, never missed).
+    uint32_t i = 1;  // index x + 1 in the padded rows
+#if QT_VECTOR_UNIT
+    constexpr uint32_t kBlock = 32;
+    const uint16_t bias = static_cast<uint16_t>(0x200u - edge_threshold);
+    for (; i + kBlock <= width + 1u; i += kBlock) {
+        uint16_t reached = 0;
+        for (uint32_t k = i; k < i + kBlock; ++k) reached |= static_cast<uint16_t>((c[k] & 0x1FFu) + bias);
+        if ((reached & 0x200u) == 0) continue;
+        for (uint32_t k = i; k < i + kBlock; ++k) nms_pixel(a, c, b, k, edge_threshold, out);
+    }
+#else
+    // Four 16-bit lanes in one 64-bit add: no carry reaches the next lane (0x1FF + 0x1FF < 0x400).
     const uint64_t lanes = 0x0001000100010001ULL;
     const uint64_t bias = (0x200u - edge_threshold) * lanes;
-    uint32_t i = 1;  // index x + 1 in the padded rows
     while (i + 3 <= width) {
         uint64_t four;
         memcpy(&four, c + i, sizeof four);
@@ -132,6 +173,7 @@ void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t w
         const uint32_t end = i + 4;
         for (; i < end; ++i) nms_pixel(a, c, b, i, edge_threshold, out);
     }
+#endif
     for (; i <= width; ++i) nms_pixel(a, c, b, i, edge_threshold, out);
 }
 
