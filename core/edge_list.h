@@ -78,8 +78,14 @@ public:
 
     // Index of the point at (x, y), or -1 when there is none (or y is outside the frame).
     int32_t find(int32_t x, int32_t y) const;
+    // Row y's points with x_lo <= x <= x_hi: indices [*first, *end), empty when y is outside
+    // the frame. One search for the span instead of one per pixel.
+    void span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const;
 
 private:
+    // Index of row y's first point with x >= key (row_start_[y + 1] when none); y in frame.
+    uint32_t lower_bound(uint32_t key, uint32_t y) const;
+
     edge_point* points_;
     uint16_t* row_start_;  // row_start_[y] .. row_start_[y + 1] - 1 are row y's points
     uint16_t capacity_;

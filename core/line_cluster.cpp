@@ -25,10 +25,28 @@ int64_t gap_along(const Segment& a, const Segment& b) {
     return hi < 0 ? -hi : lo > len ? lo - len : 0;
 }
 
+// Whether both ends of the shorter segment lie within `offset` of the longer one's line.
+// Worked in 1/32 px, so that any q16_16 coordinates keep the products within 64 bits.
+bool on_one_line(const Segment& a, const Segment& b, q16_16 offset) {
+    const int64_t adx = to32(a.x2) - to32(a.x1), ady = to32(a.y2) - to32(a.y1);
+    const int64_t bdx = to32(b.x2) - to32(b.x1), bdy = to32(b.y2) - to32(b.y1);
+    const bool a_longer = adx * adx + ady * ady >= bdx * bdx + bdy * bdy;
+    const Segment& l = a_longer ? a : b;
+    const Segment& s = a_longer ? b : a;
+    const int64_t dx = a_longer ? adx : bdx, dy = a_longer ? ady : bdy;
+    const int64_t len = isqrt64(static_cast<uint64_t>(dx * dx + dy * dy));  // 1/32 px
+    const int64_t reach = shr_round_half_away(offset.raw, 11) * len;        // offset·len
+    auto off = [&](q16_16 x, q16_16 y) {  // distance from l's line, times len
+        const int64_t c = (to32(x) - to32(l.x1)) * dy - (to32(y) - to32(l.y1)) * dx;
+        return c < 0 ? -c : c;
+    };
+    return off(s.x1, s.y1) <= reach && off(s.x2, s.y2) <= reach;
+}
+
 bool similar(const Segment& a, const Segment& b, const ClusterParams& p) {
     const int64_t d2 = sq(static_cast<int64_t>(a.cx.raw) - b.cx.raw) + sq(static_cast<int64_t>(a.cy.raw) - b.cy.raw);
     return d2 <= sq(p.distance.raw) && orientation_difference(a.theta, b.theta) <= p.max_angle &&
-           gap_along(a, b) <= p.gap.raw;
+           gap_along(a, b) <= p.gap.raw && on_one_line(a, b, p.offset);
 }
 
 }  // namespace

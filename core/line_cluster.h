@@ -2,7 +2,9 @@
 // comes out of PPHT as several short segments. Two segments are similar when their closest
 // points to the origin are near, S(li, lj) = |Ci − Cj| <= distance, as in the paper, AND their
 // orientations are near: two different lines through (or near) the origin both have C ≈ (0, 0)
-// and the paper's measure alone would merge them. Each cluster is refitted from all its
+// and the paper's measure alone would merge them. Near the origin C moves little with the
+// angle (|ΔC| ≈ rho·Δθ), so two parallel-ish sides of neighbouring shapes can pass both tests:
+// the shorter segment's ends must also lie near the longer one's line. Each cluster is refitted from all its
 // members (total least squares over their points, each member standing for its points spread
 // evenly along it), not represented by its longest member.
 #pragma once
@@ -19,6 +21,7 @@ struct ClusterParams {
     q16_16 distance = q16_16::from_int(6);  // |Ci − Cj| threshold, pixels
     angle_t max_angle = angle_from_deg(4);  // orientation difference (mod 180°) threshold
     q16_16 gap = q16_16::from_int(16);      // largest gap between merged segments along the line, px
+    q16_16 offset = q16_16::from_int(3);    // ends of the shorter segment from the longer's line, px
 };
 
 // Corners: where two lines' ends meet at a clear angle, both ends move to the lines'
@@ -26,7 +29,7 @@ struct ClusterParams {
 // gradients mix there), so ends found by PPHT stop short of it; the intersection is where the
 // sides really meet.
 struct CornerParams {
-    q16_16 max_distance = q16_16::from_int(3);  // an end moves at most this far, pixels
+    q16_16 max_distance = q16_16::from_int(4);  // an end moves at most this far, pixels
     angle_t min_angle = angle_from_deg(20);     // lines closer to parallel are left alone
 };
 

@@ -2,7 +2,7 @@
 // synthetic QVGA scenes with known truth, the effect of the direction vote window, VGA time
 // per frame (beside OpenCV's Canny + HoughLinesP when OpenCV was found at configure time) and
 // the RAM of the parts. Everything printed is deterministic except the timings.
-// Run by `bash bench.sh lines-host`; `--scenes N` sets the scenes per accuracy row (100).
+// Run by `bash bench.sh lines-host`; `--scenes N` sets the scenes per accuracy row (1000).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -442,7 +442,7 @@ void ram() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int scenes = 100;
+    int scenes = 1000;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--scenes") == 0 && i + 1 < argc) {
             scenes = std::atoi(argv[++i]);

@@ -108,6 +108,8 @@ const FlagTable<DetectOptions, Command>& table() {
                 [](DetectOptions& o) -> angle_t& { return o.params.lines.cluster.max_angle; }),
         decimal("cluster-gap", "PX", "clustering: largest gap between merged segments along the line, pixels, 0..2048", 0, 2048,
                 [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.gap; }),
+        decimal("cluster-offset", "PX", "clustering: ends of the shorter segment at most this far from the longer one's line, pixels, 0..1000", 0, 1000,
+                [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.offset; }),
         decimal("corner-join-distance", "PX", "line ends move to the lines' intersection when at most this far from it, pixels, 0..100", 0, 100,
                 [](DetectOptions& o) -> q16_16& { return o.params.lines.corners.max_distance; }),
         degrees("corner-join-angle", "line ends are joined only for lines at least this far from parallel, degrees, 0..90", 0, 90,

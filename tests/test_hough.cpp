@@ -184,3 +184,43 @@ TEST_CASE("the QVGA lines stage fits 48 KiB of RAM", "[hough]") {
     STATIC_REQUIRE(LineDetectorQvga::ram_bytes() <= 48 * 1024);
     REQUIRE(LineDetectorQvga::ram_bytes() == sizeof(LineDetectorQvga));
 }
+
+TEST_CASE("a segment's end: a run after a gap of g pixels counts once it has g points or another run follows",
+          "[hough]") {
+    // Hand-built edge lists: the row y = 50 from x = 20 to 99 (a horizontal edge, gradient
+    // direction bin 4), then points past a gap. Expected ends worked by hand from the rule.
+    struct Case {
+        std::vector<int> after;  // x of the points past x = 99
+        int end_x;               // the segment's right end
+    };
+    const Case cases[] = {
+        {{}, 99},
+        {{103}, 99},                 // gap 3, one point: noise
+        {{103, 104}, 99},            // gap 3, a run of 2 < 3
+        {{103, 104, 105}, 105},      // gap 3, a run of 3
+        {{101}, 101},                // gap 1: part of the line at once
+        {{102, 105, 108}, 105},      // runs of 1 after gaps of 2: each counts once the next begins
+        {{102, 103, 107}, 103},      // a run of 2 after a gap of 2 counts; the lone 107 does not
+    };
+    static EdgeListStorage<256, 100> storage;
+    static HoughStorage<hough_bins_for(160, 100, 90, 2), 90> accumulator;
+    for (const Case& c : cases) {
+        EdgeList list = storage.view();
+        REQUIRE(list.begin_frame(100) == Status::ok);
+        list.begin_row(50);
+        for (int x = 20; x <= 99; ++x) REQUIRE(list.push(static_cast<uint16_t>(x), 4, 0));
+        for (int x : c.after) REQUIRE(list.push(static_cast<uint16_t>(x), 4, 0));
+        list.end_frame();
+        Segment out[4];
+        uint16_t count = 0;
+        HoughStats stats;
+        REQUIRE(hough_segments(list, 160, 100, HoughParams{}, accumulator.view(), out, 4, &count, &stats) ==
+                Status::ok);
+        INFO("points past the gap: " << c.after.size() << ", expected end " << c.end_x);
+        REQUIRE(count == 1);
+        const double right = std::max(out[0].x1.raw, out[0].x2.raw) / 65536.0;
+        const double left = std::min(out[0].x1.raw, out[0].x2.raw) / 65536.0;
+        REQUIRE(left == Approx(20).margin(0.01));
+        REQUIRE(right == Approx(c.end_x).margin(0.01));
+    }
+}

@@ -47,17 +47,47 @@ scene::SceneOptions noisy(uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("polygon edges at noise 5: recall and false positives", "[accuracy]") {
-    // Quadrangles and triangles with corners of 60° or more (board-like; sharper corners cut
-    // segments short, see the README's table).
-    Totals t;
-    constexpr int kScenes = 50;
-    for (int i = 0; i < kScenes; ++i) t.add(score(scene::random_polygon_scene(noisy(1000 + i), 2, 40, 60)));
-    INFO("found " << t.found << " of " << t.scored << ", false positives " << t.false_positives);
-    REQUIRE(t.scored >= 350);
-    // 400 of 400 on these seeds; the README's 800-segment table shows 99.2 % on others.
-    REQUIRE(t.found >= t.scored * 99 / 100);
-    REQUIRE(t.false_positives <= kScenes / 10);
+TEST_CASE("polygon edges at noise 5: every side found, no false positives", "[accuracy]") {
+    // Quadrangles and triangles with corners of 60° or more (board-like), then with corners of
+    // any angle. The README's table (bash bench.sh lines-host --scenes 1000) runs seeds 1..1000
+    // of both kinds; these are others.
+    for (const double min_corner_deg : {60.0, 0.0}) {
+        Totals t;
+        constexpr int kScenes = 50;
+        for (int i = 0; i < kScenes; ++i)
+            t.add(score(scene::random_polygon_scene(noisy(1000 + i), 2, 40, min_corner_deg)));
+        INFO("corners >= " << min_corner_deg << " deg: found " << t.found << " of " << t.scored
+                           << ", false positives " << t.false_positives);
+        REQUIRE(t.scored >= 300);
+        REQUIRE(t.found == t.scored);
+        REQUIRE(t.false_positives == 0);
+    }
+}
+
+TEST_CASE("scenes that once lost a side keep every side", "[accuracy]") {
+    // Bench seeds (bash bench.sh lines-host), each of which lost one side to a mechanism now
+    // in place; taking the mechanism out loses the side again.
+    struct Case {
+        uint64_t seed;
+        double noise, min_corner_deg;
+        const char* why;
+    };
+    const Case cases[] = {
+        {849, 5, 60, "clustering: sides of two shapes 1 deg apart, 4.5 px beside each other across a 12 px gap, merged (on one line)"},
+        {122, 5, 0, "clustering: sides of two shapes 3 deg apart, 8 px beside each other across a 14 px gap, merged (on one line)"},
+        {24, 5, 60, "PPHT: a seed bin 18 deg off; way 0 left the line before any refit (walked again)"},
+        {898, 0, 60, "PPHT: a clean 42 deg staircase; the nearer of two points per column biased the fit (all fitted)"},
+        {20, 5, 60, "PPHT: one noise pixel 4 px past a corner carried the end (runs after gaps)"},
+        {167, 5, 60, "PPHT: two noise pixels 3 px past a corner carried the end (runs after gaps)"},
+    };
+    for (const Case& c : cases) {
+        scene::SceneOptions o = noisy(c.seed);
+        o.noise_sigma = c.noise;
+        o.blur_sigma = c.noise > 0 ? 0.7 : 0;
+        const scene::MatchResult r = score(scene::random_polygon_scene(o, 2, 40, c.min_corner_deg));
+        INFO("seed " << c.seed << ": " << c.why << "; found " << r.found << " of " << r.scored);
+        REQUIRE(r.found == r.scored);
+    }
 }
 
 TEST_CASE("drawn 2-px lines at noise 5: both sides merge into the centre line", "[accuracy]") {

@@ -66,6 +66,7 @@ void check_detect(const qt::cli::DetectOptions& o) {
     QT_FUZZ_CHECK(q16_in(l.cluster.distance, 0, 1000));
     QT_FUZZ_CHECK(deg_at_most(l.cluster.max_angle, 90));
     QT_FUZZ_CHECK(q16_in(l.cluster.gap, 0, 2048));
+    QT_FUZZ_CHECK(q16_in(l.cluster.offset, 0, 1000));
     QT_FUZZ_CHECK(q16_in(l.corners.max_distance, 0, 100));
     QT_FUZZ_CHECK(deg_at_most(l.corners.min_angle, 90));
     const qt::QuadParams& q = o.params.quads;
