@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "board_runner.h"
+#include "error_line.h"
 #include "flag_table.h"
 #include "parse_number.h"
 #include "quad_tracker.h"
@@ -216,16 +217,16 @@ int parse_command_line(const std::vector<std::string>& args, Command command, co
     const int parsed = table().parse(args, command, name, usage, options, given, out, err);
     if (parsed >= 0) return parsed;
     if (given.size() > 1) {
-        std::fprintf(err, "quadtrack %s: one %s only, got '%s' and '%s'\n", name, what, given[0].c_str(),
-                     given[1].c_str());
+        qt::io::print_error_line(err, "quadtrack %s: one %s only, got '%s' and '%s'", name, what, given[0].c_str(),
+                                 given[1].c_str());
         return 2;
     }
     if (given.empty()) {
-        std::fprintf(err, "quadtrack %s: no %s given (see quadtrack %s --help)\n", name, what_upper, name);
+        qt::io::print_error_line(err, "quadtrack %s: no %s given (see quadtrack %s --help)", name, what_upper, name);
         return 2;
     }
     if (options.params.quads.min_side_length > options.params.quads.max_side_length) {
-        std::fprintf(err, "quadtrack %s: --min-side is above --max-side\n", name);
+        qt::io::print_error_line(err, "quadtrack %s: --min-side is above --max-side", name);
         return 2;
     }
     positional = given[0];

@@ -3,6 +3,7 @@
 #include "board_runner.h"
 #include "cli_options.h"
 #include "detect_json.h"
+#include "error_line.h"
 #include "image_io.h"
 
 namespace qt::cli {
@@ -39,12 +40,12 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
 
     scene::GreyImage frame;
     if (!io::read_image(path, frame, error)) {
-        std::fprintf(err, "quadtrack detect: %s\n", error.c_str());
+        qt::io::print_error_line(err, "quadtrack detect: %s", error.c_str());
         return 1;
     }
     DetectResult result;
     if (!detect_frame(frame, options, result, error)) {
-        std::fprintf(err, "quadtrack detect: %s: %s\n", path.c_str(), error.c_str());
+        qt::io::print_error_line(err, "quadtrack detect: %s: %s", path.c_str(), error.c_str());
         return 1;
     }
     std::fprintf(out, "%s\n", detect_json(result, options.display_width, options.display_height).c_str());

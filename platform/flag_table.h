@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "error_line.h"
 #include "parse_number.h"
 
 namespace qt::cli {
@@ -71,20 +72,20 @@ struct FlagTable {
             }
             const Flag<Options, Command>* f = find(flag, c);
             if (f == nullptr) {
-                std::fprintf(err, "quadtrack %s: unknown option '--%s' (see quadtrack %s --help)\n", name,
-                             flag.c_str(), name);
+                qt::io::print_error_line(err, "quadtrack %s: unknown option '--%s' (see quadtrack %s --help)", name,
+                                         flag.c_str(), name);
                 return 2;
             }
             if (eq == std::string::npos) {
                 if (i + 1 == args.size()) {
-                    std::fprintf(err, "quadtrack %s: %s needs a value\n", name, a.c_str());
+                    qt::io::print_error_line(err, "quadtrack %s: %s needs a value", name, a.c_str());
                     return 2;
                 }
                 value = args[++i];
             }
             std::string why;
             if (!f->set(value, options, why)) {
-                std::fprintf(err, "quadtrack %s: --%s: %s\n", name, flag.c_str(), why.c_str());
+                qt::io::print_error_line(err, "quadtrack %s: --%s: %s", name, flag.c_str(), why.c_str());
                 return 2;
             }
         }

@@ -1,5 +1,6 @@
 #include "frame_loop.h"
 
+#include "error_line.h"
 #include "image_io.h"
 
 namespace qt::cli {
@@ -9,7 +10,7 @@ int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
     io::FrameSource source;
     std::string error;
     if (!source.open(spec, error)) {
-        std::fprintf(err, "quadtrack %s: %s\n", command, error.c_str());
+        qt::io::print_error_line(err, "quadtrack %s: %s", command, error.c_str());
         return 1;
     }
     scene::GreyImage frame;
@@ -18,19 +19,19 @@ int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
         const io::FrameSource::Next next = source.next(frame, error);
         if (next == io::FrameSource::Next::end) {
             if (k > 0) return 0;
-            std::fprintf(err, "quadtrack %s: %s: no frames\n", command, spec.c_str());
+            qt::io::print_error_line(err, "quadtrack %s: %s: no frames", command, spec.c_str());
             return 1;
         }
         if (next == io::FrameSource::Next::error) {
-            std::fprintf(err, "quadtrack %s: %s\n", command, error.c_str());
+            qt::io::print_error_line(err, "quadtrack %s: %s", command, error.c_str());
             return 1;
         }
         if (k == 0) {
             width = frame.width;
             height = frame.height;
         } else if (frame.width != width || frame.height != height) {
-            std::fprintf(err, "quadtrack %s: %s: frame %d is %d x %d, the sequence started at %d x %d\n", command,
-                         spec.c_str(), k, frame.width, frame.height, width, height);
+            qt::io::print_error_line(err, "quadtrack %s: %s: frame %d is %d x %d, the sequence started at %d x %d", command,
+                                     spec.c_str(), k, frame.width, frame.height, width, height);
             return 1;
         }
         const int status = body(k, frame);

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "error_line.h"
 #include "image_io.h"
 #include "target_json.h"
 
@@ -57,7 +58,7 @@ int run_homography(const std::vector<std::string>& args, std::FILE* out, std::FI
     std::string error;
     if (!corners_of(files[0], options.config.harris, *detector, *a, error) ||
         !corners_of(files[1], options.config.harris, *detector, *b, error)) {
-        std::fprintf(err, "quadtrack homography: %s\n", error.c_str());
+        qt::io::print_error_line(err, "quadtrack homography: %s", error.c_str());
         return 1;
     }
     const FrameHomography g = homography_between(*a, *b, options.config.geometry, *scratch);

@@ -1,5 +1,7 @@
 #include "image_io.h"
 
+#include "error_line.h"
+
 #include <cerrno>
 #include <cstring>
 #include <new>
@@ -13,15 +15,6 @@ struct FileCloser {
     void operator()(std::FILE* f) const { std::fclose(f); }
 };
 using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
-
-// Control characters (from a file name or a garbled header) would break the one-line rule.
-std::string one_line(std::string s) {
-    for (char& c : s) {
-        const unsigned char u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7F) c = '?';
-    }
-    return s;
-}
 
 bool fail(std::string& error, const std::string& path, const std::string& what) {
     error = one_line(path + ": " + what);

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "error_line.h"
 #include "frame_loop.h"
 #include "target_json.h"
 
@@ -32,8 +33,8 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
     return for_each_frame(spec, "target", err, [&](int k, const scene::GreyImage& frame) {
         const int width = frame.width, height = frame.height;
         if (width > 640 || height > 480) {
-            std::fprintf(err, "quadtrack target: %s: %d x %d is above the 640 x 480 capacity\n", spec.c_str(),
-                         width, height);
+            qt::io::print_error_line(err, "quadtrack target: %s: %d x %d is above the 640 x 480 capacity", spec.c_str(),
+                                     width, height);
             return 1;
         }
         Status s = pipeline->begin_frame(static_cast<uint16_t>(width), static_cast<uint16_t>(height));
@@ -42,12 +43,12 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         TargetFrame result;
         if (s == Status::ok || s == Status::previous_frame_incomplete) s = pipeline->finish(result);
         if (s == Status::bad_size && k == 0) {
-            std::fprintf(err, "quadtrack target: --roi %d,%d,%d,%d is not wholly inside the %d x %d frame 0\n",
-                         options.roi_x, options.roi_y, options.roi_w, options.roi_h, width, height);
+            qt::io::print_error_line(err, "quadtrack target: --roi %d,%d,%d,%d is not wholly inside the %d x %d frame 0",
+                                     options.roi_x, options.roi_y, options.roi_w, options.roi_h, width, height);
             return 1;
         }
         if (s != Status::ok && s != Status::capacity_exceeded) {
-            std::fprintf(err, "quadtrack target: %s: frame %d: %s\n", spec.c_str(), k, status_name(s));
+            qt::io::print_error_line(err, "quadtrack target: %s: frame %d: %s", spec.c_str(), k, status_name(s));
             return 1;
         }
         std::fprintf(out, "%s\n", target_json(k, result).c_str());

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 
+#include "error_line.h"
 #include "flag_table.h"
 #include "parse_number.h"
 
@@ -169,13 +170,13 @@ int parse_target_command_line(const std::vector<std::string>& args, GeometryComm
     if (parsed >= 0) return parsed;
     const size_t wanted = target ? 1 : 2;
     if (positional.size() != wanted) {
-        std::fprintf(err, "quadtrack %s: expected %s, got %zu argument%s (see quadtrack %s --help)\n", name,
-                     target ? "one SEQUENCE" : "two images A B", positional.size(),
-                     positional.size() == 1 ? "" : "s", name);
+        qt::io::print_error_line(err, "quadtrack %s: expected %s, got %zu argument%s (see quadtrack %s --help)", name,
+                                 target ? "one SEQUENCE" : "two images A B", positional.size(),
+                                 positional.size() == 1 ? "" : "s", name);
         return 2;
     }
     if (target && !options.roi_set) {
-        std::fprintf(err, "quadtrack target: --roi X,Y,W,H is required\n");
+        qt::io::print_error_line(err, "quadtrack target: --roi X,Y,W,H is required");
         return 2;
     }
     return -1;

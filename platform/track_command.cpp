@@ -2,6 +2,7 @@
 
 #include "detect_command.h"
 #include "detect_json.h"
+#include "error_line.h"
 #include "frame_loop.h"
 #include "quad_tracker.h"
 
@@ -49,7 +50,7 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         DetectResult result;
         std::string error;
         if (!detect_frame(frame, options, result, error)) {
-            std::fprintf(err, "quadtrack track: %s: frame %d: %s\n", spec.c_str(), k, error.c_str());
+            qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", spec.c_str(), k, error.c_str());
             return 1;
         }
         const TrackedQuad t = tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),

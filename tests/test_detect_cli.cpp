@@ -146,4 +146,9 @@ TEST_CASE("detect: every error is one line on stderr and a non-zero exit", "[cli
     require_error({write_file("notimage.txt", "hello world\n")}, 1, "not a PGM");
     require_error({write_file("big.pgm", "P5\n641 480\n255\n" + std::string(641 * 480, '\0'))}, 1,
                   "641 x 480 is over this build's capacity of 640 x 480");
+    // Control characters in the user's arguments still give one line (shown as '?').
+    require_error({img, "--threshold", "1\n2"}, 2, "'1?2' is not an integer");
+    require_error({img, "--frob\nnicate=3"}, 2, "unknown option '--frob?nicate'");
+    require_error({img, "two\rlines.pgm"}, 2, "'two?lines.pgm'");
+    require_error({img, "--threshold\n"}, 2, "unknown option '--threshold?'");
 }
