@@ -20,6 +20,19 @@
 
 namespace qt {
 
+namespace {
+
+// The group tests below: bit 9 (kReached) of m + threshold_bias(t) is set exactly when a 9-bit
+// magnitude m reaches the threshold t, and no sum carries past bit 9 (0x1FF + 0x1FF < 0x400),
+// for t in 1..510; outside that range the bit may be set needlessly, never missed.
+constexpr uint32_t kReached = 0x200;
+constexpr uint16_t threshold_bias(uint16_t t) { return static_cast<uint16_t>(kReached - t); }
+#if QT_VECTOR_UNIT
+constexpr int32_t kBlock = 32;  // entries per group test in the vectorised loops
+#endif
+
+}  // namespace
+
 void pack_nms_row(const gradient_word* words, uint16_t width, uint16_t* row) {
     row[0] = 0;
     for (uint16_t x = 0; x < width; ++x)
@@ -83,17 +96,16 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
     // Blocks of 32 pixels: the magnitudes, branch-free so that the host compiler vectorises
     // the loop (pack()'s branch stops it), noting whether any reaches the threshold; then,
     // only in a block where one does, the directions. Few blocks hold an edge.
-    constexpr int32_t kBlock = 32;
-    const uint16_t bias = static_cast<uint16_t>(0x200u - edge_threshold);
+    const uint16_t bias = threshold_bias(edge_threshold);
     int32_t x = 1;
     for (; x + kBlock <= last; x += kBlock) {
-        uint16_t reached = 0;  // bit 9: a magnitude reached the threshold (nms_row's test)
+        uint16_t reached = 0;
         for (int32_t k = x; k < x + kBlock; ++k) {
             const uint16_t m = magnitude(static_cast<int32_t>(center[k + 1]) - center[k - 1], gy_at(k));
             row[k + 1] = m;
             reached |= static_cast<uint16_t>(m + bias);
         }
-        if ((reached & 0x200u) == 0) continue;
+        if ((reached & kReached) == 0) continue;
         for (int32_t k = x; k < x + kBlock; ++k)
             if (row[k + 1] >= edge_threshold) row[k + 1] = inner(k);
     }
@@ -146,27 +158,24 @@ inline void nms_pixel(const uint16_t* a, const uint16_t* c, const uint16_t* b, u
 void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t width, uint16_t y,
              uint16_t edge_threshold, EdgeList& out) {
     out.begin_row(y);
-    // Most pixels are below the threshold: skip them a group at a time. Bit 9 of
-    // m + 0x200 - threshold is set exactly when the 9-bit magnitude m reaches the threshold
-    // (1..510; outside that range it may be set needlessly, never missed).
+    // Most pixels are below the threshold: skip them a group at a time (threshold_bias).
     uint32_t i = 1;  // index x + 1 in the padded rows
 #if QT_VECTOR_UNIT
-    constexpr uint32_t kBlock = 32;
-    const uint16_t bias = static_cast<uint16_t>(0x200u - edge_threshold);
+    const uint16_t bias = threshold_bias(edge_threshold);
     for (; i + kBlock <= width + 1u; i += kBlock) {
         uint16_t reached = 0;
         for (uint32_t k = i; k < i + kBlock; ++k) reached |= static_cast<uint16_t>((c[k] & 0x1FFu) + bias);
-        if ((reached & 0x200u) == 0) continue;
+        if ((reached & kReached) == 0) continue;
         for (uint32_t k = i; k < i + kBlock; ++k) nms_pixel(a, c, b, k, edge_threshold, out);
     }
 #else
-    // Four 16-bit lanes in one 64-bit add: no carry reaches the next lane (0x1FF + 0x1FF < 0x400).
+    // Four 16-bit lanes in one 64-bit add.
     const uint64_t lanes = 0x0001000100010001ULL;
-    const uint64_t bias = (0x200u - edge_threshold) * lanes;
+    const uint64_t bias = threshold_bias(edge_threshold) * lanes;
     while (i + 3 <= width) {
         uint64_t four;
         memcpy(&four, c + i, sizeof four);
-        if ((((four & (0x1FFu * lanes)) + bias) & (0x200u * lanes)) == 0) {
+        if ((((four & (0x1FFu * lanes)) + bias) & (kReached * lanes)) == 0) {
             i += 4;
             continue;
         }

@@ -131,14 +131,18 @@ private:
         tr.slope_q16 = static_cast<int32_t>(s);
     }
 
-    static void refit(Track& tr, const Moments& m, int32_t ax32, int32_t ay32) {
-        FittedLine line;
-        if (!fit_line(m, ax32, ay32, line)) return;
+    // Points the track along a fitted line.
+    static void aim(Track& tr, const FittedLine& line) {
         const int32_t mx32 = static_cast<int32_t>(shr_round_half_away(line.mx.raw, 11));
         const int32_t my32 = static_cast<int32_t>(shr_round_half_away(line.my.raw, 11));
         tr.anchor_major32 = major_of(tr, mx32, my32);
         tr.anchor_minor32 = minor_of(tr, mx32, my32);
         set_direction(tr, line.dx.raw, line.dy.raw);
+    }
+
+    static void refit(Track& tr, const Moments& m, int32_t ax32, int32_t ay32) {
+        FittedLine line;
+        if (fit_line(m, ax32, ay32, line)) aim(tr, line);
     }
 
     // Predicted minor coordinate (whole pixels) at whole-pixel major coordinate `major`.
@@ -303,7 +307,7 @@ private:
             (major_extent < 0 ? -major_extent : major_extent) * 9 < 4 * static_cast<int32_t>(p_.min_line_length))
             return false;
         FittedLine line;
-        fit_line(m, sx32, sy32, line);
+        const bool fitted = fit_line(m, sx32, sy32, line);
         q16_16 t1 = along(line, q16_16::from_raw(int64_t{end32[1][0]} * 2048), q16_16::from_raw(int64_t{end32[1][1]} * 2048));
         q16_16 t2 = along(line, q16_16::from_raw(int64_t{end32[0][0]} * 2048), q16_16::from_raw(int64_t{end32[0][1]} * 2048));
         if (t2 < t1) {
@@ -318,7 +322,7 @@ private:
             return false;
 
         // Consume every point in the corridor of the final line between the two ends.
-        refit(tr, m, sx32, sy32);
+        if (fitted) aim(tr, line);
         const int32_t a = (major_of(tr, end32[1][0], end32[1][1]) + 16) >> 5;
         const int32_t b = (major_of(tr, end32[0][0], end32[0][1]) + 16) >> 5;
         for (int32_t major = a < b ? a : b; major <= (a < b ? b : a); ++major) {
