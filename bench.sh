@@ -10,6 +10,10 @@
 #                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
 #                  false detections, time, beside OpenCV's squares.cpp recipe
+#   photos-host    boards composited onto real photographs (opencv-doc; held out: python3-skimage),
+#                  QVGA and VGA, unoccluded / occluded / board-free, 500 scenes each, beside
+#                  OpenCV's squares.cpp recipe, and a 150-frame tracked sequence; pictures of the
+#                  misses in bench_out/photos
 #   homography-host  RANSAC homography on generated inter-frame pairs (200 pairs, 0-50 % outliers):
 #                  corner error, inliers, iterations, time, beside OpenCV's findHomography
 #                  (RANSAC, RHO)
@@ -35,7 +39,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host track-host homography-host target-host soak gradient-m4 budgets budgets-m3 track-m4 hdl-latency hdl-soak fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host homography-host target-host soak gradient-m4 budgets budgets-m3 track-m4 hdl-latency hdl-soak fpga fuzz)
 
 # The host benches compare with OpenCV in the same run: its development packages are installed
 # here (never by the test command; the runtime never links it), and the configure step fails
@@ -50,8 +54,8 @@ host_build() {
 # -icount shift=0 (one SysTick tick per 40 instructions, deterministic).
 run_firmware() {
     local preset=$1 machine=$2 image=$3
-    ensure_packages cmake make gcc-arm-none-eabi libnewlib-arm-none-eabi \
-        libstdc++-arm-none-eabi-newlib qemu-system-arm
+    ensure_packages cmake make g++ gcc-arm-none-eabi libnewlib-arm-none-eabi \
+        libstdc++-arm-none-eabi-newlib qemu-system-arm opencv-doc netpbm
     cmake --preset "$preset" >/dev/null
     cmake --build --preset "$preset" -j"$jobs" >/dev/null
     qemu-system-arm -M "$machine" -cpu "$preset" -nographic \
@@ -71,6 +75,15 @@ for name in "${names[@]}"; do
         quads-host)
             host_build bench_quads
             ./build/host/platform/bench_quads ;;
+        photos-host)
+            ensure_packages opencv-doc netpbm python3-skimage
+            host_build bench_photo_boards real_photos heldout_photos
+            rm -rf bench_out/photos && mkdir -p bench_out/photos
+            ./build/host/platform/bench_photo_boards build/host/photos --scenes "${BENCH_PHOTO_SCENES:-500}" \
+                --pictures bench_out/photos
+            echo "--- held out: photographs never used to choose a parameter (python3-skimage)"
+            ./build/host/platform/bench_photo_boards build/host/photos_heldout --scenes "${BENCH_PHOTO_SCENES:-500}" \
+                --no-sequence ;;
         track-host)
             host_build bench_track
             ./build/host/platform/bench_track --out bench_out/track ;;

@@ -2,6 +2,13 @@
 // of where each row starts, so that PPHT can both visit points in random order (by list index)
 // and ask "is there an edge at (x, y)?" (binary search within one row) with no bitmap.
 //
+// When the list is full it keeps the strongest edges, not the first ones in raster order: each
+// point also has its gradient magnitude (a byte beside it), and a push onto a full list raises
+// a floor to the lowest magnitude that leaves at most 3/4 of the capacity, removes the points
+// below it (rows already filled included) and refuses weaker points from then on. So the list
+// always ends as "every edge of the frame at or above floor()", whatever the raster order
+// (amortised cost: one compaction per capacity/4 pushes).
+//
 // Packed point, LSB first:
 //   [10:0]  x      pixel column, 0..2047
 //   [21:11] y      pixel row, 0..2047
@@ -56,22 +63,26 @@ constexpr edge_point with_state(edge_point p, uint32_t s) {
 // whatever the capacities. Fill it with begin_frame / begin_row / push, in raster order.
 class EdgeList {
 public:
-    EdgeList(edge_point* points, uint16_t capacity, uint16_t* row_start, uint16_t max_rows)
-        : points_(points), row_start_(row_start), capacity_(capacity), max_rows_(max_rows) {}
+    EdgeList(edge_point* points, uint8_t* strength, uint16_t capacity, uint16_t* row_start, uint16_t max_rows)
+        : points_(points), strength_(strength), row_start_(row_start), capacity_(capacity), max_rows_(max_rows) {}
 
     // Empties the list for a frame of `height` rows; bad_size if height > max rows.
     Status begin_frame(uint16_t height);
     // Rows must be begun in increasing order, each once, before their points are pushed.
     void begin_row(uint16_t y);
-    // Appends a point of the current row in increasing x. Returns false (and counts the
-    // point as dropped) when the capacity is full.
-    bool push(uint16_t x, uint32_t dir, int32_t delta16);
+    // Appends a point of the current row in increasing x; magnitude: its L1 gradient magnitude,
+    // grey levels (0..510). A full list first drops its weakest points (see the top). Returns
+    // false (and counts the point as dropped) when the point is below floor().
+    bool push(uint16_t x, uint32_t dir, int32_t delta16, uint32_t magnitude);
     // Closes the frame: rows not begun are empty.
     void end_frame();
 
     uint16_t size() const { return count_; }
     uint16_t capacity() const { return capacity_; }
     uint32_t dropped() const { return dropped_; }  // points lost to the capacity this frame
+    // Lowest magnitude kept this frame, grey levels (even; 0 until the list first filled):
+    // every edge at or above it is in the list. An edge stage may skip weaker pixels.
+    uint16_t floor() const { return floor_; }
     uint16_t height() const { return height_; }
     edge_point& operator[](uint16_t i) { return points_[i]; }
     edge_point operator[](uint16_t i) const { return points_[i]; }
@@ -85,8 +96,11 @@ public:
 private:
     // Index of row y's first point with x >= key (row_start_[y + 1] when none); y in frame.
     uint32_t lower_bound(uint32_t key, uint32_t y) const;
+    // Raises floor_ until at most 3/4 of the capacity is left and removes the points below it.
+    void drop_weakest();
 
     edge_point* points_;
+    uint8_t* strength_;    // magnitude / 2 (0..255) of each point
     uint16_t* row_start_;  // row_start_[y] .. row_start_[y + 1] - 1 are row y's points
     uint16_t capacity_;
     uint16_t max_rows_;
@@ -94,18 +108,20 @@ private:
     uint16_t height_ = 0;
     uint16_t next_row_ = 0;  // rows below this have their start recorded
     uint16_t current_y_ = 0;
+    uint16_t floor_ = 0;   // magnitude, grey levels
     uint32_t dropped_ = 0;
 };
 
 // Storage for an edge list of Capacity points over frames of up to MaxRows rows:
-// 4·Capacity + 2·(MaxRows + 1) bytes.
+// 5·Capacity + 2·(MaxRows + 1) bytes.
 template <uint16_t Capacity, uint16_t MaxRows>
 struct EdgeListStorage {
-    static_assert(Capacity >= 1 && MaxRows >= 1, "non-empty");
+    static_assert(Capacity >= 4 && MaxRows >= 1, "room to drop a quarter");
     static_assert(MaxRows <= ep::kMaxCoordinate + 1, "rows fit the packed y");
     edge_point points[Capacity] = {};
+    uint8_t strength[Capacity] = {};
     uint16_t row_start[MaxRows + 1] = {};
-    EdgeList view() { return EdgeList(points, Capacity, row_start, MaxRows); }
+    EdgeList view() { return EdgeList(points, strength, Capacity, row_start, MaxRows); }
 };
 
 }  // namespace qt

@@ -150,7 +150,7 @@ inline void nms_pixel(const uint16_t* a, const uint16_t* c, const uint16_t* b, u
     const int32_t den = static_cast<int32_t>(behind + ahead) - 2 * static_cast<int32_t>(mm);
     int32_t delta16 = static_cast<int32_t>(div_round_half_away(num, den));
     delta16 = delta16 < -8 ? -8 : delta16 > 7 ? 7 : delta16;
-    out.push(static_cast<uint16_t>(i - 1), dir, delta16);
+    out.push(static_cast<uint16_t>(i - 1), dir, delta16, m);
 }
 
 }  // namespace

@@ -102,17 +102,22 @@ private:
         return Status::ok;
     }
 
+    // The threshold of the next row's NMS: the list's floor once it is above ours (the list
+    // would refuse the weaker edges; NMS decisions do not depend on the threshold, so this
+    // gives the same list, with less work).
+    uint16_t threshold() const { return out_->floor() > threshold_ ? out_->floor() : threshold_; }
+
     // Row next_row_ is in its slot: suppress the row before it (and the last row at the end).
     void advance() {
         const uint16_t y = next_row_;
         if (y >= 1) {
             const uint16_t* above = y >= 2 ? rows_[(y - 2) % 3] : zero_;
             nms_row(above, rows_[(y - 1) % 3], rows_[y % 3], width_, static_cast<uint16_t>(y - 1),
-                    threshold_, *out_);
+                    threshold(), *out_);
         }
         if (y + 1u == height_) {
             const uint16_t* above = y >= 1 ? rows_[(y - 1) % 3] : zero_;
-            nms_row(above, rows_[y % 3], zero_, width_, y, threshold_, *out_);
+            nms_row(above, rows_[y % 3], zero_, width_, y, threshold(), *out_);
             out_->end_frame();
             in_frame_ = false;
         }

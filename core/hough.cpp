@@ -56,12 +56,30 @@ public:
                 out[(*count)++] = s;
                 ++stats_.segments;
             } else {
+                keep_longest(out, capacity, s);
                 ++stats_.segments_dropped;
             }
         }
     }
 
 private:
+    // Squared length in (1/256 px)²: |dx|, |dy| < 2^12 px = 2^20 units, so the sum < 2^41.
+    static int64_t length2(const Segment& s) {
+        int64_t dx = static_cast<int64_t>(s.x2.raw) - s.x1.raw, dy = static_cast<int64_t>(s.y2.raw) - s.y1.raw;
+        dx = (dx < 0 ? -dx : dx) >> 8;
+        dy = (dy < 0 ? -dy : dy) >> 8;
+        return dx * dx + dy * dy;
+    }
+
+    // The output is full: s replaces the shortest segment found so far when it is longer (the
+    // weakest evidence goes, whatever the visiting order); otherwise s is the one dropped.
+    static void keep_longest(Segment* out, uint16_t capacity, const Segment& s) {
+        uint16_t shortest = 0;
+        for (uint16_t k = 1; k < capacity; ++k)
+            if (length2(out[k]) < length2(out[shortest])) shortest = k;
+        if (length2(s) > length2(out[shortest])) out[shortest] = s;
+    }
+
     // Casts (+1) or withdraws (-1) the point's votes; returns the highest count among its bins
     // and that bin's index (θ index · rho bins + rho index).
     uint32_t vote(edge_point pt, int delta, uint32_t* best_bin) {

@@ -39,7 +39,8 @@ struct HoughStats {
     uint32_t lines_followed = 0;     // bins that reached the threshold
     uint32_t walk_steps = 0;         // pixels stepped while following lines
     uint16_t segments = 0;           // segments reported
-    uint16_t segments_dropped = 0;   // segments found with the output full
+    uint16_t segments_dropped = 0;   // segments found with the output full: the shortest of
+                                     // those found and the new one is dropped
     bool budget_exhausted = false;   // stopped at max_walk_steps: not every point was visited
 };
 

@@ -123,6 +123,16 @@ public:
     const Segment* lines() const { return lines_; }
     uint16_t line_count() const { return line_count_; }
     const LineStats& stats() const { return stats_; }
+    // Puts a refined line in place of line i (i < line_count(); others are ignored).
+    void replace_line(uint16_t i, const Segment& s) {
+        if (i < line_count_) lines_[i] = s;
+    }
+    // Adds a line found later (a quadrangle's completed side); false when the list is full.
+    bool append_line(const Segment& s) {
+        if (line_count_ == MaxLines) return false;
+        lines_[line_count_++] = s;
+        return true;
+    }
     const EdgeList& edges() const { return edges_view_; }
     uint16_t width() const { return width_; }    // of the frame begun last, pixels
     uint16_t height() const { return height_; }

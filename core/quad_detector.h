@@ -21,15 +21,20 @@ namespace qt {
 
 struct Quad {
     Point16 corners[4];  // anti-clockwise as seen, corner 0 has the smallest x + y (quad_rules.h)
-    uint8_t lines[4];    // index into the input lines of the line along side i (corner i -> i + 1)
+    uint8_t lines[4];    // index into the input lines of the line along side i (corner i -> i + 1),
+                         // or kCompletedSide (see detect_quads)
     q16_16 score;        // fraction of the perimeter covered by the four lines' segments, [0, 1]
 };
+
+// Quad::lines of a side that no line found: completed from its neighbours (detect_quads).
+constexpr uint8_t kCompletedSide = 255;
 
 // Why candidates were turned down, for tuning the tolerances on real footage.
 struct QuadStats {
     uint16_t parallel_pairs = 0;   // pairs passing rule 1 and the rule-4 separation test
     uint16_t pairs_dropped = 0;    // pairs found with the pair capacity full
     uint32_t combinations = 0;     // pair combinations tried
+    uint32_t completions = 0;      // (parallel pair, third line) completions tried
     uint32_t rejected_perpendicular = 0;  // rule 2
     uint32_t rejected_shape = 0;    // no four corners, or not convex
     uint32_t rejected_contrast = 0; // a side's polarity disagrees with QuadParams::contrast
@@ -40,6 +45,8 @@ struct QuadStats {
                                     // perimeter less than min_score
     uint32_t accepted = 0;          // candidates passing every rule
     uint16_t quads = 0;             // written to the output (the best `capacity` of them)
+    uint16_t rejected_evidence = 0; // of those, turned down by the edge evidence along their
+                                    // sides (board_detector.h, quad_refine.h)
 };
 
 // One parallel pair: two line indices.
@@ -47,15 +54,22 @@ struct LinePair {
     uint8_t a, b;
 };
 
-// Finds quadrangles among lines[0 .. n) (n <= 255) in a width × height frame. Writes the best
+// Finds quadrangles among lines[0 .. n) (n <= 254) in a width × height frame. Writes the best
 // `capacity` distinct candidates (two whose corners all lie within collinear_distance of each
 // other are one quadrangle, reported once), highest score first (ties: larger perimeter first, then lower line
 // indices), to out[0 .. *count). `pairs` is scratch for pair_capacity parallel pairs, `normals`
 // for n line normals.
-// Returns bad_size for n > 255 or a zero frame size, capacity_exceeded when parallel pairs
+//
+// With `completed` (room for `capacity` lines) and params.complete_hidden_side, a quadrangle
+// may also have one side that no line gives, hidden along most of its length (an arm across
+// it) while its corners show: for a parallel pair (a, b) and a line c almost perpendicular to
+// both, the side joining the ends of a and b farther from c. Its Quad::lines entry is then
+// kCompletedSide and completed[k] holds it for out[k] (only its own visible pieces count as its
+// support; the three others need theirs). Work: P·N more candidates for P pairs, N lines.
+// Returns bad_size for n > 254 or a zero frame size, capacity_exceeded when parallel pairs
 // were dropped (the quads found are still valid and written), ok otherwise.
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
                     const QuadParams& params, LinePair* pairs, uint16_t pair_capacity, SinCos* normals, Quad* out,
-                    uint16_t capacity, uint16_t* count, QuadStats* stats);
+                    uint16_t capacity, uint16_t* count, QuadStats* stats, Segment* completed = nullptr);
 
 }  // namespace qt

@@ -11,6 +11,12 @@ int64_t wide(q16_16 v) { return v.raw; }
 
 }  // namespace
 
+QuadParams sized_quad_params(const QuadParams& p, uint16_t height) {
+    QuadParams sized = p;
+    if (sized.min_side_length.raw == 0) sized.min_side_length = q16_16::from_int(height >= 20 ? height / 10 : 1);
+    return sized;
+}
+
 angle_t line_orientation(const Segment& s) { return s.theta & (kAngleHalfTurn - 1u); }
 
 bool rule_parallel(angle_t theta_a, angle_t theta_b, const QuadParams& p) {

@@ -36,27 +36,35 @@ struct QuadParams {
     // Rule 3: corners inside the image — at least this far inside the frame's outer pixel
     // edges (the frame spans [-0.5, width - 0.5] × [-0.5, height - 0.5]), pixels.
     q16_16 corner_margin = q16_16::from_int(0);
-    // Rule 4: every side (corner to corner) between these lengths, pixels.
-    q16_16 min_side_length = q16_16::from_int(20);
+    // Rule 4: every side (corner to corner) between these lengths, pixels; a shortest side of
+    // 0 stands for a tenth of the frame height (detect_quads).
+    q16_16 min_side_length = q16_16::from_int(0);
     q16_16 max_side_length = q16_16::from_int(2048);
     // Rule 5: the display area's aspect, width / height, and the largest factor by which the
     // measured ratio (mean of top and bottom sides) / (mean of left and right sides) may
     // differ from it, either way. Perspective alone moves the ratio by up to 1/cos(tilt).
     q16_16 display_aspect = q16_16::from_ratio(4, 3);
-    q16_16 aspect_tolerance = q16_16::from_ratio(8, 5);
+    q16_16 aspect_tolerance = q16_16::from_ratio(9, 5);
     // Support: each side must be covered by segments over at least this fraction of its length
     // (a quadrangle from four lines whose segments lie elsewhere is not a board). Every line
     // with both ends within collinear_distance pixels of the side's line counts, so a side cut
     // in two by an occluder keeps both pieces.
-    q16_16 min_side_coverage = q16_16::from_ratio(1, 3);
+    q16_16 min_side_coverage = q16_16::from_ratio(1, 5);
     q16_16 collinear_distance = q16_16::from_int(2);
     // ... and the four together at least this fraction of the perimeter (the score), [0, 1].
-    q16_16 min_score = q16_16::from_ratio(7, 10);
+    q16_16 min_score = q16_16::from_ratio(1, 2);
     // Beyond the paper: the sides' contrast polarity must agree with the board being brighter
     // (or darker) than its surroundings. Quadrangles made of sides of different objects rarely
     // pass this, which is what keeps false detections on cluttered frames down.
     Contrast contrast = Contrast::bright_board;
+    // Beyond the paper: a side hidden along most of its length is completed from the two
+    // sides next to it (detect_quads), then must show edge evidence of its own (quad_refine.h).
+    bool complete_hidden_side = true;
 };
+
+// The parameters with the frame-size defaults filled in for a frame `height` px tall: a
+// min_side_length of 0 becomes a tenth of the height (at least 1 px).
+QuadParams sized_quad_params(const QuadParams& p, uint16_t height);
 
 // Orientation of the line through a segment's normal angle, modulo 180°.
 angle_t line_orientation(const Segment& s);

@@ -92,6 +92,7 @@ const char* track_state_name(TrackState state) {
 QuadTrackerParams default_quad_tracker_params(uint16_t width, uint16_t height) {
     QuadTrackerParams p;
     p.lines = default_line_tracker_params(width, height);
+    p.shape = sized_quad_params(p.shape, height);
     return p;
 }
 

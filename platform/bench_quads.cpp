@@ -92,12 +92,15 @@ bool detect_with(const sc::GreyImage& img, const qt::BoardParams& params, Corner
 
 bool ours(const sc::GreyImage& img, Corners& c) { return detect_with(img, qt::BoardParams{}, c); }
 
-// The paper's five rules alone: no contrast test, no support requirement.
+// The paper's five rules alone: no contrast test, no support requirement, no edge evidence, no
+// completion of a hidden side (the sides are still refined).
 bool rules_only(const sc::GreyImage& img, Corners& c) {
     qt::BoardParams p;
     p.quads.contrast = qt::Contrast::any;
     p.quads.min_side_coverage = qt::q16_16::from_int(0);
     p.quads.min_score = qt::q16_16::from_int(0);
+    p.quads.complete_hidden_side = false;
+    p.refine.verify = false;
     return detect_with(img, p, c);
 }
 

@@ -31,6 +31,15 @@ bool parse_q16(const std::string& text, double lo, double hi, q16_16& out, std::
     return true;
 }
 
+bool parse_yes_no(const std::string& text, bool& out, std::string& error) {
+    if (text == "yes" || text == "no") {
+        out = text == "yes";
+        return true;
+    }
+    error = "'" + text + "' is not yes or no";
+    return false;
+}
+
 std::string show_q16(q16_16 v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v.raw / 65536.0);
@@ -121,7 +130,7 @@ const FlagTable<DetectOptions, Command>& table() {
                 [](DetectOptions& o) -> angle_t& { return o.params.quads.perpendicular_tolerance; }),
         decimal("corner-margin", "PX", "rule 3: corners at least this far inside the frame, pixels, 0..1000", 0, 1000,
                 [](DetectOptions& o) -> q16_16& { return o.params.quads.corner_margin; }),
-        decimal("min-side", "PX", "rule 4: shortest side, pixels, 1..2048", 1, 2048,
+        decimal("min-side", "PX", "rule 4: shortest side, pixels, 0..2048 (0: a tenth of the frame height)", 0, 2048,
                 [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_length; }),
         decimal("max-side", "PX", "rule 4: longest side, pixels, 1..2048", 1, 2048,
                 [](DetectOptions& o) -> q16_16& { return o.params.quads.max_side_length; }),
@@ -163,6 +172,22 @@ const FlagTable<DetectOptions, Command>& table() {
              o.params.quads.display_aspect = q16_16::from_ratio(w, h);
              return true;
          }},
+        {"complete-hidden-side", "yes|no", "a side hidden along most of its length is completed from its two neighbours",
+         [](DetectOptions o) { return std::string(o.params.quads.complete_hidden_side ? "yes" : "no"); },
+         [](const std::string& t, DetectOptions& o, std::string& e) { return parse_yes_no(t, o.params.quads.complete_hidden_side, e); }},
+        decimal("refine-band", "PX", "side refinement: edge points within this of a side, first pass, pixels, 0.5..8", 0.5, 8,
+                [](DetectOptions& o) -> q16_16& { return o.params.refine.band; }),
+        decimal("refine-fine-band", "PX", "side refinement: the same, second pass, pixels, 0.5..8", 0.5, 8,
+                [](DetectOptions& o) -> q16_16& { return o.params.refine.fine_band; }),
+        {"verify", "yes|no", "keep only quadrangles whose sides show edge evidence (the --*-evidence limits)",
+         [](DetectOptions o) { return std::string(o.params.refine.verify ? "yes" : "no"); },
+         [](const std::string& t, DetectOptions& o, std::string& e) { return parse_yes_no(t, o.params.refine.verify, e); }},
+        integer<uint8_t>("side-evidence", "PERCENT", "each side: edge evidence along at least this share of it, %, 0..100", 0, 100,
+                         [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_side_evidence_percent; }),
+        integer<uint8_t>("hidden-side-evidence", "PERCENT", "a completed side: edge evidence along at least this share of it, %, 0..100", 0, 100,
+                         [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_hidden_side_evidence_percent; }),
+        integer<uint8_t>("evidence", "PERCENT", "the four sides together: edge evidence along at least this share, %, 0..100", 0, 100,
+                         [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_evidence_percent; }),
         integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1, HostBoardDetector::max_quads(),
                           [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
         // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.

@@ -2,6 +2,9 @@
 
 #include "error_line.h"
 
+#include <dirent.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <new>
@@ -384,6 +387,39 @@ bool read_image(const std::string& path, scene::GreyImage& out, std::string& err
         return fail(error, path, "not a PGM (P5), PPM (P6) or Y4M file");
     } catch (const std::bad_alloc&) {  // a message string itself could not be built
         out_of_memory(error, path);
+        return false;
+    }
+}
+
+bool read_image_folder(const std::string& dir, std::vector<NamedImage>& out, std::string& error) {
+    try {
+        std::vector<std::string> names;
+        DIR* d = opendir(dir.c_str());
+        if (d == nullptr) {
+            error = one_line(dir + ": cannot read the folder (" + std::strerror(errno) + ")");
+            return false;
+        }
+        while (const dirent* e = readdir(d)) {
+            const std::string n = e->d_name;
+            const std::string ext = n.size() > 4 ? n.substr(n.size() - 4) : "";
+            if (ext == ".pnm" || ext == ".pgm" || ext == ".ppm") names.push_back(n);
+        }
+        closedir(d);
+        if (names.empty()) {
+            error = one_line(dir + ": no .pnm, .pgm or .ppm file");
+            return false;
+        }
+        std::sort(names.begin(), names.end());
+        std::vector<NamedImage> images;
+        for (const std::string& n : names) {
+            NamedImage img{n, {}};
+            if (!read_image(dir + "/" + n, img.image, error)) return false;
+            images.push_back(std::move(img));
+        }
+        out = std::move(images);
+        return true;
+    } catch (const std::bad_alloc&) {
+        error = one_line(dir + ": out of memory");
         return false;
     }
 }

@@ -29,6 +29,17 @@ constexpr int kMaxImageSide = 16384;
 // On failure returns false, leaves `out` unchanged and sets `error` to one line.
 bool read_image(const std::string& path, scene::GreyImage& out, std::string& error);
 
+// A grey image and the file name (without its folder) it was read from.
+struct NamedImage {
+    std::string name;
+    scene::GreyImage image;
+};
+
+// Reads every .pnm, .pgm and .ppm file of folder `dir` (read_image), in name order. On
+// failure (the folder cannot be read, a file is bad, or there is no such file) returns false
+// with one line in `error`.
+bool read_image_folder(const std::string& dir, std::vector<NamedImage>& out, std::string& error);
+
 // Writes `img` as binary PGM (P5, maxval 255; header "P5\n<w> <h>\n255\n"). Refuses an image
 // whose width or height is not positive or whose pixel count is not width·height.
 // On failure returns false and sets `error` to one line.

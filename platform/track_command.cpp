@@ -30,7 +30,7 @@ QuadTrackerParams tracker_params(const DetectOptions& o, uint16_t width, uint16_
     p.gate_angle = o.track.gate_angle;
     p.gate_distance = o.track.gate_distance;
     p.max_predicted = o.track.max_predicted;
-    p.shape = o.params.quads;
+    p.shape = sized_quad_params(o.params.quads, height);
     return p;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <utility>
 
 #include "det_math.h"
 #include "prng.h"
@@ -47,8 +48,11 @@ double dist2_to_segment(Point2 a, Point2 b, double x, double y) {  // px^2
 }
 
 // Composites `poly` of grey `level` over `buf` (w × h grey levels, row-major) by pixel coverage:
-// exact 0/1 for pixels no edge comes near, else the fraction of 8×8 samples inside.
-void paint(std::vector<double>& buf, int w, int h, const std::vector<Point2>& poly, double level) {
+// exact 0/1 for pixels no edge comes near, else the fraction of 8×8 samples inside. With ramps,
+// the level at pixel (x, y) is level + ramp_x·(x − poly[0].x) + ramp_y·(y − poly[0].y).
+void paint(std::vector<double>& buf, int w, int h, const std::vector<Point2>& poly, double level,
+           double ramp_x = 0, double ramp_y = 0) {
+    const bool shaded = ramp_x != 0 || ramp_y != 0;
     double minx = poly[0].x, maxx = minx, miny = poly[0].y, maxy = miny;
     for (const Point2& p : poly) {
         minx = std::min(minx, p.x), maxx = std::max(maxx, p.x);
@@ -73,7 +77,8 @@ void paint(std::vector<double>& buf, int w, int h, const std::vector<Point2>& po
                 cover = n / 64.0;
             }
             double& v = buf[static_cast<std::size_t>(y) * w + x];
-            if (cover > 0) v += (level - v) * cover;
+            const double here = shaded ? level + ramp_x * (x - poly[0].x) + ramp_y * (y - poly[0].y) : level;
+            if (cover > 0) v += (here - v) * cover;
         }
     }
 }
@@ -165,20 +170,33 @@ void LineScene::add_line(Point2 a, Point2 b, double width_px, uint8_t level) {
     if (!(len > 0) || !(width_px > 0)) throw std::invalid_argument("LineScene::add_line: empty line");
     const double nx = -(b.y - a.y) / len * (width_px / 2), ny = (b.x - a.x) / len * (width_px / 2);
     shapes_.push_back(
-        {{{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, level});
+        {{{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, static_cast<double>(level), 0, 0});
     truth_.push_back({a, b});
 }
 
 void LineScene::add_polygon(const std::vector<Point2>& vertices, uint8_t level) {
+    add_shaded_polygon(vertices, level, 0, 0);
+}
+
+void LineScene::add_shaded_polygon(const std::vector<Point2>& vertices, double level, double ramp_x, double ramp_y) {
     if (vertices.size() < 3) throw std::invalid_argument("LineScene::add_polygon: fewer than 3 vertices");
-    shapes_.push_back({vertices, level});
+    if (!std::isfinite(level) || !std::isfinite(ramp_x) || !std::isfinite(ramp_y))
+        throw std::invalid_argument("LineScene::add_shaded_polygon: level or ramp not finite");
+    shapes_.push_back({vertices, level, ramp_x, ramp_y});
     for (std::size_t i = 0; i < vertices.size(); ++i)
         truth_.push_back({vertices[i], vertices[(i + 1) % vertices.size()]});
 }
 
+void LineScene::set_background(std::vector<double> levels) {
+    if (levels.size() != static_cast<std::size_t>(options_.width) * options_.height)
+        throw std::invalid_argument("LineScene::set_background: not width × height levels");
+    background_ = std::move(levels);
+}
+
 GreyImage LineScene::render() const {
     const int w = options_.width, h = options_.height;
-    std::vector<double> buf(static_cast<std::size_t>(w) * h, options_.background);
+    std::vector<double> buf = background_.empty() ? std::vector<double>(static_cast<std::size_t>(w) * h, options_.background)
+                                                  : background_;
     if (options_.clutter_texture > 0) {  // two octaves, peak amplitude clutter_texture
         Pcg32 rng(options_.seed, kStreamTexture);
         add_value_noise(buf, w, h, 32, 0.7 * options_.clutter_texture, rng);
@@ -191,7 +209,7 @@ GreyImage LineScene::render() const {
             paint(buf, w, h, blob, rng.below(options_.clutter_blob_max + 1u));
         }
     }
-    for (const Shape& s : shapes_) paint(buf, w, h, s.polygon, s.level);
+    for (const Shape& s : shapes_) paint(buf, w, h, s.polygon, s.level, s.ramp_x, s.ramp_y);
     const SceneOptions::Illumination& light = options_.illumination;
     if (light.centre_gain != 1 || light.ramp_x != 0 || light.ramp_y != 0 || light.falloff != 0) {
         for (int y = 0; y < h; ++y) {
@@ -213,6 +231,33 @@ GreyImage LineScene::render() const {
     for (std::size_t i = 0; i < buf.size(); ++i)
         img.pixels[i] = static_cast<uint8_t>(std::min(255.0, std::max(0.0, std::floor(buf[i] + 0.5))));
     return img;
+}
+
+bool uneven_illumination(int w, int h, double gain_lo, Pcg32& rng, SceneOptions::Illumination* out) {
+    // Pattern: a ramp of up to 1 per half diagonal along a random direction, minus a radial
+    // falloff of 0.25–1 per half diagonal squared around a hot spot near the frame; then
+    // rescaled so that its range over the pixel centres is [gain_lo, 1].
+    const double half_diag = 0.5 * std::sqrt(static_cast<double>(w) * w + static_cast<double>(h) * h);
+    const double hot_x = uniform(rng, -0.25 * w, 1.25 * w), hot_y = uniform(rng, -0.25 * h, 1.25 * h);
+    double sd, cd;
+    det_sincos(uniform(rng, 0, 2 * kPi), sd, cd);
+    const double ramp = uniform(rng, 0, 1) / half_diag, falloff = uniform(rng, 0.25, 1) / (half_diag * half_diag);
+    double lo = 1e300, hi = -1e300;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const double dx = x - hot_x, dy = y - hot_y;
+            const double g = ramp * cd * dx + ramp * sd * dy - falloff * (dx * dx + dy * dy);
+            lo = std::min(lo, g), hi = std::max(hi, g);
+        }
+    if (!(gain_lo < 1 && hi > lo)) return false;
+    const double k = (1 - gain_lo) / (hi - lo);
+    out->centre_x = hot_x;
+    out->centre_y = hot_y;
+    out->centre_gain = gain_lo - k * lo;
+    out->ramp_x = k * ramp * cd;
+    out->ramp_y = k * ramp * sd;
+    out->falloff = k * falloff;
+    return true;
 }
 
 LineScene random_polygon_scene(const SceneOptions& options, int polygons, double min_side,

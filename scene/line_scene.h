@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "image.h"
+#include "prng.h"
 
 namespace qt::scene {
 
@@ -60,6 +61,14 @@ public:
     // level `level`, anti-aliased. Ground truth: one TrueSegment per side, v[i] -> v[i + 1 mod n].
     // Throws std::invalid_argument for fewer than 3 vertices.
     void add_polygon(const std::vector<Point2>& vertices, uint8_t level);
+    // The same with a level that changes linearly across the frame (a shaded surface): grey
+    // level + ramp_x·(x − vertices[0].x) + ramp_y·(y − vertices[0].y) at pixel (x, y).
+    void add_shaded_polygon(const std::vector<Point2>& vertices, double level, double ramp_x, double ramp_y);
+
+    // A background of width × height grey levels (row-major; e.g. a photograph) instead of the
+    // flat options().background; texture and blobs still go on top. Throws
+    // std::invalid_argument on a wrong size.
+    void set_background(std::vector<double> levels);
 
     // Background (+ texture, + clutter blobs), the shapes in the order added, illumination,
     // blur, noise;
@@ -72,12 +81,20 @@ public:
 private:
     struct Shape {
         std::vector<Point2> polygon;  // pixels
-        uint8_t level;
+        double level;                 // grey level at polygon[0]
+        double ramp_x, ramp_y;        // its change per px along x and y
     };
     SceneOptions options_;
+    std::vector<double> background_;  // empty: options_.background everywhere
     std::vector<Shape> shapes_;
     std::vector<TrueSegment> truth_;
 };
+
+// Uneven lighting over a w × h frame: a ramp of up to 1 per half diagonal along a random
+// direction minus a radial falloff around a hot spot near the frame, rescaled so that the gain
+// over the pixel centres spans [gain_lo, 1]. Draws from `rng` in any case; returns false (and
+// leaves *out alone: even lighting) when gain_lo >= 1.
+bool uneven_illumination(int w, int h, double gain_lo, Pcg32& rng, SceneOptions::Illumination* out);
 
 // `polygons` random convex triangles/quadrangles, sides >= min_side px, inner angles >=
 // min_corner_deg, every vertex at least 4 px inside the outermost pixel centres, grey level in

@@ -13,6 +13,11 @@ inline double uniform01(Pcg32& rng) { return (rng.next() + 0.5) * (1.0 / 4294967
 // Uniform in (lo, hi).
 inline double uniform(Pcg32& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
 
+// Uniform integer in [lo, hi], lo <= hi.
+inline int uniform_int(Pcg32& rng, int lo, int hi) {
+    return lo + static_cast<int>(rng.below(static_cast<uint32_t>(hi - lo + 1)));
+}
+
 // Standard normal deviates by the polar form of Box-Muller (Marsaglia), in pairs.
 class Gaussian {
 public:

@@ -106,7 +106,7 @@ TEST_CASE("edge list lookups agree with a brute-force search; capacity overflow 
     for (uint16_t y = 0; y < 40; y += 1 + static_cast<uint16_t>(rng.below(3))) {
         list.begin_row(y);
         for (uint16_t x = 0; x < 50; ++x)
-            if (rng.below(4) == 0 && list.push(x, 0, 0)) truth[y][x] = true;
+            if (rng.below(4) == 0 && list.push(x, 0, 0, 100)) truth[y][x] = true;
     }
     list.end_frame();
     for (int y = -1; y <= 40; ++y)
@@ -122,7 +122,7 @@ TEST_CASE("edge list lookups agree with a brute-force search; capacity overflow 
     // Fill past the capacity.
     REQUIRE(list.begin_frame(2) == Status::ok);
     list.begin_row(0);
-    for (uint16_t k = 0; k < 310; ++k) list.push(static_cast<uint16_t>(k % 2000), 0, 0);
+    for (uint16_t k = 0; k < 310; ++k) list.push(static_cast<uint16_t>(k % 2000), 0, 0, 100);
     list.end_frame();
     REQUIRE(list.size() == 300);
     REQUIRE(list.dropped() == 10);
@@ -183,4 +183,61 @@ TEST_CASE("camera rows packed for NMS equal gradient words packed for NMS, at an
     // Both kinds of entry occur, so the comparison tested the direction pass too.
     REQUIRE(with_direction > entries / 10);
     REQUIRE(with_direction < entries);
+}
+
+TEST_CASE("a full edge list keeps every edge at or above a floor, the strongest, in any raster order",
+          "[edges]") {
+    // 40 rows of 50 points with random magnitudes, the strongest in the last rows (a raster
+    // order that fills the list with weak points first): 2000 pushes into a capacity of 300.
+    EdgeListStorage<300, 40> storage;
+    EdgeList list = storage.view();
+    REQUIRE(list.begin_frame(40) == Status::ok);
+    Pcg32 rng(31);
+    uint32_t magnitude[40][50];
+    for (uint16_t y = 0; y < 40; ++y) {
+        list.begin_row(y);
+        for (uint16_t x = 0; x < 50; ++x) {
+            magnitude[y][x] = 40 + rng.below(200) + (y >= 30 ? 200u : 0u);
+            list.push(x, y % 16u, 0, magnitude[y][x]);
+        }
+    }
+    list.end_frame();
+    const uint32_t floor = list.floor();
+    REQUIRE(floor > 40);
+    uint32_t at_floor = 0, just_below = 0;  // pushed points at or above floor, floor - 2
+    for (uint16_t y = 0; y < 40; ++y)
+        for (uint16_t x = 0; x < 50; ++x) {
+            at_floor += magnitude[y][x] >= floor;
+            just_below += magnitude[y][x] + 2 >= floor;
+            // Kept exactly when at or above the floor, and found where it was pushed.
+            const int32_t i = list.find(x, y);
+            REQUIRE((i >= 0) == (magnitude[y][x] >= floor));
+            if (i >= 0) REQUIRE(ep::dir(list[static_cast<uint16_t>(i)]) == y % 16u);
+        }
+    CHECK(list.size() == at_floor);
+    CHECK(list.size() <= 300);
+    // The floor rose no higher than needed: one step lower would have kept more than the
+    // 3/4 of the capacity a compaction leaves.
+    CHECK(just_below > 225);
+    CHECK(list.dropped() == 2000u - list.size());
+    // Every row of the strong last ten is there in full (all at 240 or more).
+    for (uint16_t y = 30; y < 40; ++y)
+        for (uint16_t x = 0; x < 50; ++x)
+            if (magnitude[y][x] >= floor) REQUIRE(list.find(x, y) >= 0);
+}
+
+TEST_CASE("a full edge list of equal magnitudes refuses the rest rather than choose among equals",
+          "[edges]") {
+    EdgeListStorage<100, 4> storage;
+    EdgeList list = storage.view();
+    REQUIRE(list.begin_frame(4) == Status::ok);
+    list.begin_row(0);
+    for (uint16_t x = 0; x < 100; ++x) REQUIRE(list.push(x, 0, 0, 80));
+    list.begin_row(1);
+    CHECK_FALSE(list.push(0, 0, 0, 80));  // no point is weaker than another: all stay
+    CHECK(list.floor() == 82);
+    CHECK(list.push(1, 0, 0, 90) == false);  // stronger, but the list is full of equals
+    list.end_frame();
+    CHECK(list.size() == 100);
+    CHECK(list.dropped() == 2);
 }

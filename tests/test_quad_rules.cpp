@@ -105,15 +105,15 @@ TEST_CASE("rule 4: side lengths between the limits", "[quad]") {
 }
 
 TEST_CASE("rule 5: adjacent-side ratio close to the display's", "[quad]") {
-    QuadParams p;  // 4:3 display, factor 1.6 either way: ratio in [0.8333, 2.1333]
+    QuadParams p;  // 4:3 display, factor 1.8 either way: ratio in [0.7407, 2.4]
     auto sides = [](double left, double bottom, double right, double top) {
         return std::vector<q16_16>{to_q16(left), to_q16(bottom), to_q16(right), to_q16(top)};
     };
     CHECK(rule_aspect(sides(60, 80, 60, 80).data(), p));    // exactly 4:3
-    CHECK(rule_aspect(sides(100, 84, 100, 84).data(), p));  // 0.84
-    CHECK_FALSE(rule_aspect(sides(100, 82, 100, 82).data(), p));  // 0.82
-    CHECK(rule_aspect(sides(50, 106, 50, 106).data(), p));  // 2.12
-    CHECK_FALSE(rule_aspect(sides(50, 107, 50, 107).data(), p));  // 2.14
+    CHECK(rule_aspect(sides(100, 75, 100, 75).data(), p));  // 0.75
+    CHECK_FALSE(rule_aspect(sides(100, 73, 100, 73).data(), p));  // 0.73
+    CHECK(rule_aspect(sides(50, 119, 50, 119).data(), p));  // 2.38
+    CHECK_FALSE(rule_aspect(sides(50, 121, 50, 121).data(), p));  // 2.42
     // Means of opposite sides: (70 + 90) / (50 + 70) = 4/3 though no single pair is.
     CHECK(rule_aspect(sides(50, 70, 70, 90).data(), p));
     p.aspect_tolerance = q16_16::from_ratio(11, 10);  // [1.2121, 1.4667]
@@ -279,7 +279,10 @@ TEST_CASE("contrast: the board's inside is on every side's bright side", "[quad]
     mixed[2].bright_side = +1;  // the bottom edge brighter outside: not a bright board
     const Found f = find(mixed, 320, 240);
     CHECK(f.quads.empty());
-    CHECK(f.stats.rejected_contrast == 1);
+    // Top and bottom no longer face each other with their bright sides: not a parallel pair
+    // of a bright board, so no candidate is formed (left and right still pair).
+    CHECK(f.stats.parallel_pairs == 1);
+    CHECK(f.stats.rejected_contrast == 0);
     QuadParams any;
     any.contrast = Contrast::any;
     CHECK(find(mixed, 320, 240, any).quads.size() == 1);
@@ -294,19 +297,22 @@ TEST_CASE("contrast: the board's inside is on every side's bright side", "[quad]
 
 TEST_CASE("support: a side cut in two by an occluder counts both pieces", "[quad]") {
     // Left side x = 10 from y 10 to 85 (75 px): pieces 10..32 and 63..85, 22 px each (0.29).
+    // Each side covered at least a third: one piece (0.29) is not enough, both (0.59) are.
+    QuadParams third;
+    third.min_side_coverage = q16_16::from_ratio(1, 3);
     auto s = sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));
     std::vector<Segment> one = {s[0], s[1], s[2], segment(10, 85, 10, 63)};
-    const Found f = find(one, 320, 240);
+    const Found f = find(one, 320, 240, third);
     CHECK(f.quads.empty());
     CHECK(f.stats.rejected_support == 1);
     std::vector<Segment> both = one;
     both.push_back(segment(10, 32, 10, 10));
-    const Found g = find(both, 320, 240);
+    const Found g = find(both, 320, 240, third);
     REQUIRE(g.quads.size() == 1);
     // (100 + 75 + 100 + 44) / 350 of the perimeter.
     CHECK(std::fabs(from_q16(g.quads[0].score) - 319.0 / 350) < 1e-4);
     // A parallel line 3 px to the side is another edge, not a piece of this one.
     std::vector<Segment> beside = one;
     beside.push_back(segment(13, 32, 13, 10));
-    CHECK(find(beside, 320, 240).quads.empty());
+    CHECK(find(beside, 320, 240, third).quads.empty());
 }

@@ -201,6 +201,27 @@ const char* run_frame(const ChainFrame& frame, bool& frame_open, Instructions& n
     return nullptr;
 }
 
+// The median frame of each stage (the upper one of an even count; the stages' medians may come
+// from different frames, and their total is their sum, like the worst line's).
+Instructions median_of(const Instructions* frames, unsigned count) {
+    Instructions m;
+    uint64_t values[kMaxCaseFrames];
+    auto median = [&](unsigned n) {  // insertion sort: a dozen values
+        for (unsigned i = 1; i < n; ++i)
+            for (unsigned j = i; j > 0 && values[j - 1] > values[j]; --j) {
+                const uint64_t t = values[j];
+                values[j] = values[j - 1];
+                values[j - 1] = t;
+            }
+        return values[n / 2];
+    };
+    for (unsigned s = 0; s < kStages; ++s) {
+        for (unsigned f = 0; f < count; ++f) values[f] = frames[f].stage[s];
+        m.stage[s] = median(count);
+    }
+    return m;
+}
+
 }  // namespace
 
 int main() {
@@ -248,6 +269,7 @@ int main() {
             for (unsigned s = 0; s < kStages; ++s)
                 if (per_frame[f].stage[s] > worst[c].stage[s]) worst[c].stage[s] = per_frame[f].stage[s];
         }
+        if (chain.count > 1) print_instructions("median ", chain.name, median_of(per_frame, chain.count));
     }
 
     // Worst frame of each case, stage by stage (the stages' worst frames may differ).

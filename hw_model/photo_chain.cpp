@@ -1,0 +1,21 @@
+#include "photo_chain.h"
+
+#include "photo_board_scene.h"
+
+namespace qt::vec {
+
+ChainCase photo_chain_case(const std::vector<io::NamedImage>& photos) {
+    ChainCase c{"photos_qvga", {}};
+    for (int k = 0; k < 12; ++k) {
+        scene::PhotoBoardOptions o;
+        o.width = 320;
+        o.height = 240;
+        o.board = k < 9;
+        o.occlude = k >= 6 && k < 9;
+        const scene::GreyImage& photo = photos[static_cast<size_t>(k) * 7 % photos.size()].image;
+        c.frames.push_back(scene::make_photo_board_scene(o, photo, 8000000u + static_cast<uint64_t>(k)).image);
+    }
+    return c;
+}
+
+}  // namespace qt::vec
