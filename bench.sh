@@ -60,7 +60,7 @@ run_firmware() {
     cmake --build --preset "$preset" -j"$jobs" >/dev/null
     qemu-system-arm -M "$machine" -cpu "$preset" -nographic \
         -semihosting-config enable=on,target=native -icount shift=0 \
-        -kernel "build/$preset/platform/cortex_m/$image.elf"
+        -kernel "build/$preset/platform/firmware/$image.elf"
 }
 
 for name in "${names[@]}"; do
@@ -115,7 +115,7 @@ for name in "${names[@]}"; do
             for ((s = 101; s <= 100 + ${QT_SOAK_SEEDS:-10}; ++s)); do
                 cmake -DQT_VECTORS=build/host/hw_model/qt_vectors -DVVP="$(command -v vvp)" \
                     -DBENCH=build/host/hdl/tb_gradient_w640.vvp -DSEED="$s" -DPIXELS="${QT_SOAK_PIXELS:-1000000}" \
-                    -DPREFIX=build/host/hdl/soak/bench -P hdl/run_soak.cmake 2>&1 |
+                    -DPREFIX=build/host/hdl/soak/bench -P hdl/bench/run_soak.cmake 2>&1 |
                     grep -E -A1 --no-group-separator 'mismatches=|MISMATCH|EXTRA|MISSING|FATAL|Error' || true
             done | awk -v seeds="${QT_SOAK_SEEDS:-10}" '{ print }
                 /mismatches=/ { n++; if (/mismatches=FAIL/) bad++; for (i = 2; i <= NF; i++) { split($i, kv, "="); t[kv[1]] += kv[2] } }

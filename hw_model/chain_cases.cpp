@@ -2,11 +2,11 @@
 
 #include <cstdio>
 
-#include "board_detector.h"
-#include "board_sequence.h"
-#include "line_scene.h"
-#include "quad_tracker.h"
-#include "result_text.h"
+#include "quads/board_detector.h"
+#include "scene/board_sequence.h"
+#include "scene/line_scene.h"
+#include "tracking/quad_tracker.h"
+#include "api/result_text.h"
 
 namespace qt::vec {
 
@@ -36,7 +36,7 @@ std::string frame_name(const ChainCase& c, size_t k) {
     return c.name + suffix;
 }
 
-std::string format_pgm(const scene::GreyImage& img) {
+std::string format_pgm(const io::GreyImage& img) {
     std::string s = "P5\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n255\n";
     s.append(img.pixels.begin(), img.pixels.end());
     return s;
@@ -51,7 +51,7 @@ std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases) {
         tracker.reset();
         std::string text;
         for (size_t k = 0; k < c.frames.size(); ++k) {
-            const scene::GreyImage& frame = c.frames[k];
+            const io::GreyImage& frame = c.frames[k];
             if (det.begin_frame(static_cast<uint16_t>(frame.width), static_cast<uint16_t>(frame.height), params) !=
                 Status::ok) {
                 text += "error: frame does not fit BoardDetectorQvga\n";

@@ -1,17 +1,17 @@
 // Committed QVGA frame sequences of the whole quadrangle chain (vectors/scenes/) and the result
-// text (core/result_text.h) the host's core computes for them: the firmware must print the same
+// text (core/api/result_text.h) the host's core computes for them: the firmware must print the same
 // text byte for byte.
 #pragma once
 #include <string>
 #include <vector>
 
-#include "image.h"
+#include "io/grey_image.h"
 
 namespace qt::vec {
 
 struct ChainCase {
     std::string name;                   // frames are vectors/scenes/<name>_<NN>.pgm
-    std::vector<scene::GreyImage> frames;  // 320 × 240
+    std::vector<io::GreyImage> frames;  // 320 × 240
 };
 
 std::vector<ChainCase> chain_cases();
@@ -20,7 +20,7 @@ std::vector<ChainCase> chain_cases();
 std::string frame_name(const ChainCase& c, size_t k);
 
 // Binary PGM (P5, maxval 255) of a frame.
-std::string format_pgm(const scene::GreyImage& img);
+std::string format_pgm(const io::GreyImage& img);
 
 // The result text of each case, the cases in order and each case's frames in order through
 // one BoardDetectorQvga and one QuadTracker (default parameters for 320 × 240), reset() at the

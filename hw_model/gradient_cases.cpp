@@ -1,22 +1,22 @@
 #include "gradient_cases.h"
 
-#include "board_scene.h"
-#include "prng.h"
+#include "scene/board_scene.h"
+#include "base/prng.h"
 
 namespace qt::vec {
 
 namespace {
 
-scene::GreyImage noise(int w, int h, Pcg32& rng) {
-    scene::GreyImage img(w, h);
+io::GreyImage noise(int w, int h, Pcg32& rng) {
+    io::GreyImage img(w, h);
     for (uint8_t& p : img.pixels) p = static_cast<uint8_t>(rng.next() & 0xFF);
     return img;
 }
 
 // 0/255 checks of 2×2 pixels: x-1 and x+1 fall in different checks on every other column,
 // so gx and gy reach ±255 and the magnitude 510.
-scene::GreyImage checkerboard(int w, int h) {
-    scene::GreyImage img(w, h);
+io::GreyImage checkerboard(int w, int h) {
+    io::GreyImage img(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) img.at(x, y) = ((x / 2 + y / 2) & 1) ? 255 : 0;
     return img;
@@ -24,7 +24,7 @@ scene::GreyImage checkerboard(int w, int h) {
 
 std::string size_text(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
-GradientCase single(const std::string& name, uint64_t seed, const scene::GreyImage& img) {
+GradientCase single(const std::string& name, uint64_t seed, const io::GreyImage& img) {
     GradientCase c{name, seed, size_text(img.width, img.height), 1, {}};
     append_frame(img, c.in);
     return c;
@@ -35,7 +35,7 @@ GradientCase noise_case(const std::string& name, uint64_t seed, int w, int h) {
     return single(name, seed, noise(w, h, rng));
 }
 
-void append_beats(const scene::GreyImage& img, int rows, std::vector<InBeat>& beats,
+void append_beats(const io::GreyImage& img, int rows, std::vector<InBeat>& beats,
                   uint16_t declared_height) {
     for (int y = 0; y < rows; ++y)
         for (int x = 0; x < img.width; ++x) {
@@ -92,7 +92,7 @@ GradientCase torn_stream(uint64_t seed) {
 
 }  // namespace
 
-void append_frame(const scene::GreyImage& img, std::vector<InBeat>& beats) {
+void append_frame(const io::GreyImage& img, std::vector<InBeat>& beats) {
     append_beats(img, img.height, beats, static_cast<uint16_t>(img.height));
 }
 
@@ -105,8 +105,8 @@ std::vector<GradientCase> gradient_cases() {
     cases.push_back(noise_case("size_3x3", 15, 3, 3));
     cases.push_back(noise_case("noise_37x23", 16, 37, 23));
     cases.push_back(noise_case("noise_64x48", 17, 64, 48));
-    cases.push_back(single("const0_64x48", 0, scene::GreyImage(64, 48, 0)));
-    cases.push_back(single("const255_64x48", 0, scene::GreyImage(64, 48, 255)));
+    cases.push_back(single("const0_64x48", 0, io::GreyImage(64, 48, 0)));
+    cases.push_back(single("const255_64x48", 0, io::GreyImage(64, 48, 255)));
     cases.push_back(single("checker_64x48", 0, checkerboard(64, 48)));
     {
         const scene::BoardScene board = scene::default_board_scene();

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "image.h"
+#include "io/grey_image.h"
 #include "vector_format.h"
 
 namespace qt::vec {
@@ -21,7 +21,7 @@ struct GradientCase {
 };
 
 // Append one well-formed frame to a beat stream.
-void append_frame(const scene::GreyImage& img, std::vector<InBeat>& beats);
+void append_frame(const io::GreyImage& img, std::vector<InBeat>& beats);
 
 std::vector<GradientCase> gradient_cases();
 

@@ -1,4 +1,4 @@
-// Bit-accurate, beat-level model of hdl/gradient.v: the same widths, border rule, framing and
+// Bit-accurate, beat-level model of hdl/rtl/gradient.v: the same widths, border rule, framing and
 // error behaviour (docs/gradient.md), but none of its clocks. Feed it the accepted input beats
 // in order; it returns the output beats the block emits, in order.
 #pragma once

@@ -1,6 +1,6 @@
 #include "photo_chain.h"
 
-#include "photo_board_scene.h"
+#include "scene/photo_board_scene.h"
 
 namespace qt::vec {
 
@@ -12,7 +12,7 @@ ChainCase photo_chain_case(const std::vector<io::NamedImage>& photos) {
         o.height = 240;
         o.board = k < 9;
         o.occlude = k >= 6 && k < 9;
-        const scene::GreyImage& photo = photos[static_cast<size_t>(k) * 7 % photos.size()].image;
+        const io::GreyImage& photo = photos[static_cast<size_t>(k) * 7 % photos.size()].image;
         c.frames.push_back(scene::make_photo_board_scene(o, photo, 8000000u + static_cast<uint64_t>(k)).image);
     }
     return c;

@@ -1,12 +1,12 @@
-// The chain case of real photographs for the firmware's budget (platform/cortex_m): boards
-// composited onto Debian's opencv-doc photographs at QVGA (scene/photo_board_scene.h) — six
+// The chain case of real photographs for the firmware's budget (platform/firmware): boards
+// composited onto Debian's opencv-doc photographs at QVGA (platform/scene/photo_board_scene.h) — six
 // unoccluded, three with a side partly hidden, three without a board — fixed seeds, so that
 // the firmware runs the same frames the host's chain_texts() describes.
 #pragma once
 #include <vector>
 
 #include "chain_cases.h"
-#include "image_io.h"
+#include "io/image_io.h"
 
 namespace qt::vec {
 

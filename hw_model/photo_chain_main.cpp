@@ -1,6 +1,6 @@
 // photo_chain PHOTO_DIR OUT_DIR: writes OUT_DIR/photos_qvga_NN.pgm and photos_qvga.chain.txt
 // (photo_chain.h) for the firmware's chain case of real photographs; built and run at build
-// time by the Cortex-M presets (platform/cortex_m/CMakeLists.txt).
+// time by the Cortex-M presets (platform/firmware/CMakeLists.txt).
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>

@@ -2,10 +2,10 @@
 // generated from the gradient-word definition, and the whole chain's test frames with
 // their expected results.
 //   qt_vectors --write ROOT            regenerate ROOT/vectors/gradient/, ROOT/vectors/scenes/ and
-//                                      ROOT/hdl/gradient_word.vh
+//                                      ROOT/hdl/rtl/gradient_word.vh
 //   qt_vectors --check ROOT            exit 1 unless every committed file equals a fresh generation
 //   qt_vectors --direction-table FILE  expected direction bin of every (gx, gy), gx outer, gy inner,
-//                                      -255..255 each, one hex digit per line (hdl/tb_direction.v)
+//                                      -255..255 each, one hex digit per line (hdl/bench/tb_direction.v)
 //   qt_vectors --soak SEED PIXELS PREFIX  a soak stream (docs/gradient.md, "Soak") of at least
 //                                      PIXELS input beats: PREFIX.in.hex, PREFIX.out.hex,
 //                                      PREFIX.resets.hex; prints its counts on one line
@@ -49,7 +49,7 @@ Files generate() {
             files["vectors/scenes/" + frame_name(c, k) + ".pgm"] = format_pgm(c.frames[k]);
         files["vectors/scenes/" + c.name + ".chain.txt"] = texts[i];
     }
-    files["hdl/gradient_word.vh"] = verilog_header();
+    files["hdl/rtl/gradient_word.vh"] = verilog_header();
     return files;
 }
 
@@ -70,7 +70,7 @@ int write_all(const std::string& root) {
             return 1;
         }
     }
-    std::printf("wrote vectors/gradient/, vectors/scenes/ and hdl/gradient_word.vh under %s\n", root.c_str());
+    std::printf("wrote vectors/gradient/, vectors/scenes/ and hdl/rtl/gradient_word.vh under %s\n", root.c_str());
     return 0;
 }
 
@@ -117,7 +117,7 @@ bool parse_count(const char* text, uint64_t& value) {
     return *end == '\0';
 }
 
-// One line of name=value counts, for scripts (hdl/run_soak.cmake, bench.sh hdl-soak).
+// One line of name=value counts, for scripts (hdl/bench/run_soak.cmake, bench.sh hdl-soak).
 int soak(const char* seed_text, const char* pixels_text, const std::string& prefix) {
     using namespace qt::vec;
     uint64_t seed = 0, pixels = 0;

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "gradient_model.h"
-#include "prng.h"
+#include "base/prng.h"
 
 namespace qt::vec {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "gradient_word.h"
+#include "gradient/gradient_word.h"
 
 namespace qt::vec {
 
@@ -79,7 +79,7 @@ bool parse_manifest(const std::string& text, std::vector<ManifestEntry>& entries
 
 uint64_t fnv1a64(const std::string& bytes, uint64_t hash = 0xcbf29ce484222325ULL);
 
-// The Verilog include with the word layout and vector bit positions (hdl/gradient_word.vh).
+// The Verilog include with the word layout and vector bit positions (hdl/rtl/gradient_word.vh).
 std::string verilog_header();
 
 }  // namespace qt::vec

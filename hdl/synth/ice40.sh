@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Synthesis and place-and-route of hdl/gradient.v (MAX_WIDTH 640) for two iCE40 devices with a
+# Synthesis and place-and-route of hdl/rtl/gradient.v (MAX_WIDTH 640) for two iCE40 devices with a
 # 100 MHz clock constraint. Prints one line per device: logic cells, block RAMs, Fmax.
 #
 #   bash hdl/synth/ice40.sh [BUILD_DIR]      (default: a new temporary directory)
@@ -23,10 +23,10 @@ for tool in yosys nextpnr-ice40; do
     command -v "$tool" >/dev/null || { echo "ice40.sh: $tool not found" >&2; exit 1; }
 done
 
-src=("$hdl/gradient.v" "$hdl/gradient_direction.v")
+src=("$hdl/rtl/gradient.v" "$hdl/rtl/gradient_direction.v")
 
 # No latches anywhere in the design (elaborated RTL).
-yosys -q -l "$out/latch_check.log" -p "read_verilog -I$hdl ${src[*]}; hierarchy -top gradient;
+yosys -q -l "$out/latch_check.log" -p "read_verilog -I$hdl/rtl ${src[*]}; hierarchy -top gradient;
     chparam -set MAX_WIDTH 640 gradient; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr" \
     >/dev/null || { echo "ice40.sh: latch check failed, see $out/latch_check.log" >&2; exit 1; }
 
@@ -57,7 +57,7 @@ run() {
     local name=$1 ydev=$2 pnr=$3 top=$4
     local wrap=""
     [ "$top" = gradient ] || wrap="read_verilog $out/$top.v; hierarchy -top $top; flatten;"
-    yosys -q -l "$out/$name.yosys.log" -p "read_verilog -I$hdl ${src[*]};
+    yosys -q -l "$out/$name.yosys.log" -p "read_verilog -I$hdl/rtl ${src[*]};
         chparam -set MAX_WIDTH 640 gradient;
         synth_ice40 -top gradient -abc9 -device $ydev -noflatten;
         flatten;

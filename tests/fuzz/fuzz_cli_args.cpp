@@ -1,7 +1,7 @@
 // Fuzz target: the input bytes split at NUL into an argument vector, parsed as the arguments
 // of every command: qt::cli::parse_command_line (detect, track) and
 // qt::cli::parse_target_command_line (homography, target); usage and errors go to /dev/null.
-// Invariants (platform/cli_options.h, platform/target_options.h):
+// Invariants (platform/cli/cli_options.h, platform/cli/target_options.h):
 //   - the result is -1 (run), 0 (--help/-h was given) or 2 (bad command line);
 //   - on -1 the positional arguments are the required number (detect, track, target: one;
 //     homography: two), each one of the arguments and not a flag, and target has its --roi;
@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "cli_options.h"
+#include "cli/cli_options.h"
 #include "fuzz_check.h"
-#include "target_options.h"
+#include "cli/target_options.h"
 
 namespace {
 

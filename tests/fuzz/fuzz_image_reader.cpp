@@ -1,6 +1,6 @@
 // Fuzz target: the input bytes as an image file, read through the path-based API users call —
 // qt::io::read_image, then qt::io::FrameSource (open, next() to the end or an error, so the
-// y4m multi-frame paths run). Invariants (platform/image_io.h):
+// y4m multi-frame paths run). Invariants (platform/io/image_io.h):
 //   - a frame read has width, height in 1..kMaxImageSide and width·height pixels;
 //   - a failure is ONE line beginning with the file name, and read_image leaves `out` as it was;
 //   - FrameSource's first frame is read_image's frame (same pixels), or the same error line;
@@ -16,13 +16,13 @@
 #include <vector>
 
 #include "fuzz_check.h"
-#include "image_io.h"
+#include "io/image_io.h"
 
 namespace {
 
 using qt::io::FrameSource;
 using qt::io::kMaxImageSide;
-using qt::scene::GreyImage;
+using qt::io::GreyImage;
 
 std::string pick_temp_path() {
     std::string dir = "/tmp";

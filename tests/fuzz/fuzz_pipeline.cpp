@@ -46,11 +46,11 @@
 #include <cstring>
 #include <new>
 
-#include "board_detector.h"
+#include "quads/board_detector.h"
 #include "fuzz_check.h"
-#include "gradient_stage.h"
-#include "quad_tracker.h"
-#include "target_pipeline.h"
+#include "gradient/gradient_stage.h"
+#include "tracking/quad_tracker.h"
+#include "target/float/target_pipeline.h"
 
 namespace {
 

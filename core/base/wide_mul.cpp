@@ -1,0 +1,81 @@
+#include "base/wide_mul.h"
+
+namespace qt {
+
+int64_t mul_shr_round(int64_t a, int64_t b, int n) {
+    // Magnitudes as unsigned (two's-complement negation in uint64_t is defined, and gives 2^63
+    // for INT64_MIN); the sign is applied at the end, so rounding half up on the magnitude is
+    // rounding half away from zero on the signed value.
+    const bool neg = (a < 0) != (b < 0);
+    const uint64_t ua = a < 0 ? 0u - static_cast<uint64_t>(a) : static_cast<uint64_t>(a);
+    const uint64_t ub = b < 0 ? 0u - static_cast<uint64_t>(b) : static_cast<uint64_t>(b);
+    const uint64_t mask = 0xFFFFFFFFu;
+    const uint64_t a0 = ua & mask, a1 = ua >> 32, b0 = ub & mask, b1 = ub >> 32;
+    const uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;  // each < 2^64
+    const uint64_t mid = (p00 >> 32) + (p01 & mask) + (p10 & mask);           // < 3·2^32
+    uint64_t lo = (mid << 32) | (p00 & mask);
+    // hi < 2^64: the full product is < 2^126.
+    uint64_t hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    if (n > 0) {  // + 2^(n-1): the half for rounding
+        if (n - 1 < 64) {
+            const uint64_t half = static_cast<uint64_t>(1) << (n - 1);
+            lo += half;
+            if (lo < half) ++hi;  // carry; hi stays < 2^64 (product + half < 2^127)
+        } else {
+            hi += static_cast<uint64_t>(1) << (n - 65);
+        }
+    }
+    uint64_t q_lo, q_hi;
+    if (n == 0) {
+        q_lo = lo;
+        q_hi = hi;
+    } else if (n < 64) {
+        q_lo = (lo >> n) | (hi << (64 - n));
+        q_hi = hi >> n;
+    } else {
+        q_lo = hi >> (n - 64);
+        q_hi = 0;
+    }
+    const uint64_t max = static_cast<uint64_t>(INT64_MAX);
+    if (q_hi != 0 || q_lo > max) q_lo = max;
+    const int64_t m = static_cast<int64_t>(q_lo);
+    return neg ? -m : m;
+}
+
+namespace {
+
+int bit_length(int64_t v) {  // v > 0: the n with 2^(n-1) <= v < 2^n
+    int n = 0;
+    while (v != 0) {
+        v >>= 1;
+        ++n;
+    }
+    return n;
+}
+
+}  // namespace
+
+Reciprocal reciprocal(int64_t s) {
+    const int len = bit_length(s);  // len ∈ [1, 63]
+    const uint64_t d = static_cast<uint64_t>(s);
+    // Restoring division of 2^(len-1+62) by d: rem < d < 2^63 throughout, so 2·rem < 2^64.
+    uint64_t rem = static_cast<uint64_t>(1) << (len - 1);  // 2^(len-1) <= d: first digit 0 or 1
+    uint64_t q = 0;
+    if (rem >= d) {
+        q = 1;
+        rem -= d;
+    }
+    for (int i = 0; i < 62; ++i) {
+        rem <<= 1;
+        q <<= 1;
+        if (rem >= d) {
+            rem -= d;
+            q |= 1u;
+        }
+    }
+    // q = floor(2^(len+61)/d) <= 2^62; round half up on the next bit.
+    if ((rem << 1) >= d) ++q;
+    return Reciprocal{static_cast<int64_t>(q), len};
+}
+
+}  // namespace qt

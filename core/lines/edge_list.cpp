@@ -1,0 +1,104 @@
+#include "lines/edge_list.h"
+
+namespace qt {
+
+Status EdgeList::begin_frame(uint16_t height) {
+    count_ = 0;
+    dropped_ = 0;
+    next_row_ = 0;
+    current_y_ = 0;
+    height_ = 0;
+    floor_ = 0;
+    if (height == 0 || height > max_rows_) return Status::bad_size;
+    height_ = height;
+    return Status::ok;
+}
+
+void EdgeList::begin_row(uint16_t y) {
+    while (next_row_ <= y && next_row_ < height_) row_start_[next_row_++] = count_;
+    current_y_ = y;
+}
+
+bool EdgeList::push(uint16_t x, uint32_t dir, int32_t delta16, uint32_t magnitude) {
+    if (count_ == capacity_) drop_weakest();
+    if (magnitude < floor_ || count_ == capacity_) {
+        ++dropped_;
+        return false;
+    }
+    strength_[count_] = static_cast<uint8_t>(magnitude > 510u ? 255u : magnitude / 2u);
+    points_[count_++] = ep::make(x, current_y_, dir, delta16);
+    return true;
+}
+
+void EdgeList::drop_weakest() {
+    // Strengths are magnitude / 2: the floor moves in steps of 2 grey levels.
+    uint16_t histogram[256] = {};
+    uint32_t top = 0;
+    for (uint32_t i = 0; i < count_; ++i) {
+        ++histogram[strength_[i]];
+        top = strength_[i] > top ? strength_[i] : top;
+    }
+    const uint32_t keep_at_most = capacity_ - capacity_ / 4u;
+    uint32_t kept = 0, s = 256;
+    while (s > 0 && kept + histogram[s - 1] <= keep_at_most) kept += histogram[--s];
+    if (s > top) {
+        // The strongest value alone fills more than 3/4: no point can be called weaker than the
+        // others. They all stay, the floor rises above them, and push() refuses what follows
+        // (a stronger point comes back here, so this happens at most 256 times a frame).
+        floor_ = static_cast<uint16_t>(2u * (top + 1u));
+        return;
+    }
+    // s: the lowest strength whose points all fit, one step above the old floor at least (the
+    // list is full of points at or above it).
+    floor_ = static_cast<uint16_t>(2u * s);
+    // Rows begun so far: 0 .. next_row_ - 1; the last of them runs to count_.
+    uint32_t write = 0;
+    for (uint32_t y = 0; y < next_row_; ++y) {
+        const uint32_t end = y + 1 < next_row_ ? row_start_[y + 1] : count_;
+        const uint32_t begin = row_start_[y];
+        row_start_[y] = static_cast<uint16_t>(write);
+        for (uint32_t i = begin; i < end; ++i) {
+            if (strength_[i] < s) continue;
+            points_[write] = points_[i];
+            strength_[write] = strength_[i];
+            ++write;
+        }
+    }
+    dropped_ += count_ - write;
+    count_ = static_cast<uint16_t>(write);
+}
+
+void EdgeList::end_frame() {
+    while (next_row_ <= height_) row_start_[next_row_++] = count_;
+}
+
+uint32_t EdgeList::lower_bound(uint32_t key, uint32_t y) const {
+    // Halving without a data-dependent branch (a conditional move): the rows are short and the
+    // keys random, so a branch would mispredict about every other step.
+    uint32_t first = row_start_[y], n = row_start_[y + 1] - first;
+    if (n == 0) return first;
+    while (n > 1) {
+        const uint32_t half = n / 2;
+        first = ep::x(points_[first + half - 1]) < key ? first + half : first;
+        n -= half;
+    }
+    return first + (ep::x(points_[first]) < key ? 1u : 0u);
+}
+
+int32_t EdgeList::find(int32_t x, int32_t y) const {
+    if (y < 0 || y >= static_cast<int32_t>(height_) || x < 0) return -1;
+    const uint32_t i = lower_bound(static_cast<uint32_t>(x), static_cast<uint32_t>(y));
+    return i < row_start_[y + 1] && ep::x(points_[i]) == static_cast<uint32_t>(x) ? static_cast<int32_t>(i) : -1;
+}
+
+void EdgeList::span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const {
+    *first = *end = 0;
+    if (y < 0 || y >= static_cast<int32_t>(height_) || x_hi < 0 || x_hi < x_lo) return;
+    uint32_t i = lower_bound(x_lo < 0 ? 0u : static_cast<uint32_t>(x_lo), static_cast<uint32_t>(y));
+    *first = i;
+    const uint32_t row_end = row_start_[y + 1];
+    while (i < row_end && ep::x(points_[i]) <= static_cast<uint32_t>(x_hi)) ++i;
+    *end = i;
+}
+
+}  // namespace qt

@@ -1,0 +1,127 @@
+// The edge list: every edge pixel of a frame in raster order, packed in 32 bits, with an index
+// of where each row starts, so that PPHT can both visit points in random order (by list index)
+// and ask "is there an edge at (x, y)?" (binary search within one row) with no bitmap.
+//
+// When the list is full it keeps the strongest edges, not the first ones in raster order: each
+// point also has its gradient magnitude (a byte beside it), and a push onto a full list raises
+// a floor to the lowest magnitude that leaves at most 3/4 of the capacity, removes the points
+// below it (rows already filled included) and refuses weaker points from then on. So the list
+// always ends as "every edge of the frame at or above floor()", whatever the raster order
+// (amortised cost: one compaction per capacity/4 pushes).
+//
+// Packed point, LSB first:
+//   [10:0]  x      pixel column, 0..2047
+//   [21:11] y      pixel row, 0..2047
+//   [25:22] dir    gradient direction bin 0..15 (gradient_word.h), 22.5° each
+//   [27:26] state  0 = not yet visited by PPHT, 1 = has voted, 2 = consumed by a segment
+//   [31:28] delta  sub-pixel offset of the magnitude peak along the gradient axis, signed,
+//                  1/16 of an axis step, -8..7 (the parabola through the NMS samples)
+#pragma once
+#include <stdint.h>
+
+#include "base/status.h"
+
+namespace qt {
+
+using edge_point = uint32_t;
+
+namespace ep {
+constexpr uint32_t kMaxCoordinate = 2047;  // frames up to 2048 × 2048 pixels
+constexpr uint32_t kFresh = 0, kVoted = 1, kConsumed = 2;
+constexpr edge_point make(uint32_t x, uint32_t y, uint32_t dir, int32_t delta16 = 0) {
+    return (x & 0x7FFu) | ((y & 0x7FFu) << 11) | ((dir & 15u) << 22) |
+           ((static_cast<uint32_t>(delta16) & 15u) << 28);
+}
+constexpr uint32_t x(edge_point p) { return p & 0x7FFu; }
+constexpr uint32_t y(edge_point p) { return (p >> 11) & 0x7FFu; }
+constexpr uint32_t dir(edge_point p) { return (p >> 22) & 15u; }
+constexpr uint32_t state(edge_point p) { return (p >> 26) & 3u; }
+constexpr int32_t delta16(edge_point p) { return static_cast<int32_t>(((p >> 28) ^ 8u)) - 8; }
+// Step of the gradient axis of direction bin d in 1/2 pixel: (2,0) for 0°, (2,1) for 22.5°
+// (the odd axes interpolate between two neighbours), (2,2) for 45°, ...; negated for d >= 8.
+constexpr int32_t axis_x2(uint32_t d) {
+    constexpr int8_t kX[8] = {2, 2, 2, 1, 0, -1, -2, -2};
+    return d < 8 ? kX[d] : -kX[d - 8];
+}
+constexpr int32_t axis_y2(uint32_t d) {
+    constexpr int8_t kY[8] = {0, 1, 2, 2, 2, 2, 2, 1};
+    return d < 8 ? kY[d] : -kY[d - 8];
+}
+// Sub-pixel position in 1/32 pixel: 32·(x, y) + delta16 · axis step (1/16 · 1/2).
+constexpr int32_t x32(edge_point p) {
+    return static_cast<int32_t>(x(p)) * 32 + delta16(p) * axis_x2(dir(p));
+}
+constexpr int32_t y32(edge_point p) {
+    return static_cast<int32_t>(y(p)) * 32 + delta16(p) * axis_y2(dir(p));
+}
+constexpr edge_point with_state(edge_point p, uint32_t s) {
+    return (p & ~(3u << 26)) | ((s & 3u) << 26);
+}
+}  // namespace ep
+
+// Non-owning view of an edge list's storage; algorithms take this, so they are compiled once
+// whatever the capacities. Fill it with begin_frame / begin_row / push, in raster order.
+class EdgeList {
+public:
+    EdgeList(edge_point* points, uint8_t* strength, uint16_t capacity, uint16_t* row_start, uint16_t max_rows)
+        : points_(points), strength_(strength), row_start_(row_start), capacity_(capacity), max_rows_(max_rows) {}
+
+    // Empties the list for a frame of `height` rows; bad_size if height > max rows.
+    Status begin_frame(uint16_t height);
+    // Rows must be begun in increasing order, each once, before their points are pushed.
+    void begin_row(uint16_t y);
+    // Appends a point of the current row in increasing x; magnitude: its L1 gradient magnitude,
+    // grey levels (0..510). A full list first drops its weakest points (see the top). Returns
+    // false (and counts the point as dropped) when the point is below floor().
+    bool push(uint16_t x, uint32_t dir, int32_t delta16, uint32_t magnitude);
+    // Closes the frame: rows not begun are empty.
+    void end_frame();
+
+    uint16_t size() const { return count_; }
+    uint16_t capacity() const { return capacity_; }
+    uint32_t dropped() const { return dropped_; }  // points lost to the capacity this frame
+    // Lowest magnitude kept this frame, grey levels (even; 0 until the list first filled):
+    // every edge at or above it is in the list. An edge stage may skip weaker pixels.
+    uint16_t floor() const { return floor_; }
+    uint16_t height() const { return height_; }
+    edge_point& operator[](uint16_t i) { return points_[i]; }
+    edge_point operator[](uint16_t i) const { return points_[i]; }
+
+    // Index of the point at (x, y), or -1 when there is none (or y is outside the frame).
+    int32_t find(int32_t x, int32_t y) const;
+    // Row y's points with x_lo <= x <= x_hi: indices [*first, *end), empty when y is outside
+    // the frame. One search for the span instead of one per pixel.
+    void span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const;
+
+private:
+    // Index of row y's first point with x >= key (row_start_[y + 1] when none); y in frame.
+    uint32_t lower_bound(uint32_t key, uint32_t y) const;
+    // Raises floor_ until at most 3/4 of the capacity is left and removes the points below it.
+    void drop_weakest();
+
+    edge_point* points_;
+    uint8_t* strength_;    // magnitude / 2 (0..255) of each point
+    uint16_t* row_start_;  // row_start_[y] .. row_start_[y + 1] - 1 are row y's points
+    uint16_t capacity_;
+    uint16_t max_rows_;
+    uint16_t count_ = 0;
+    uint16_t height_ = 0;
+    uint16_t next_row_ = 0;  // rows below this have their start recorded
+    uint16_t current_y_ = 0;
+    uint16_t floor_ = 0;   // magnitude, grey levels
+    uint32_t dropped_ = 0;
+};
+
+// Storage for an edge list of Capacity points over frames of up to MaxRows rows:
+// 5·Capacity + 2·(MaxRows + 1) bytes.
+template <uint16_t Capacity, uint16_t MaxRows>
+struct EdgeListStorage {
+    static_assert(Capacity >= 4 && MaxRows >= 1, "room to drop a quarter");
+    static_assert(MaxRows <= ep::kMaxCoordinate + 1, "rows fit the packed y");
+    edge_point points[Capacity] = {};
+    uint8_t strength[Capacity] = {};
+    uint16_t row_start[MaxRows + 1] = {};
+    EdgeList view() { return EdgeList(points, strength, Capacity, row_start, MaxRows); }
+};
+
+}  // namespace qt

@@ -1,0 +1,86 @@
+// Fixed-point progressive probabilistic Hough transform (PPHT; Matas, Galambos, Kittler 2000)
+// over an edge list: points are visited in a seeded pseudo-random order; each votes; when a
+// bin reaches the vote threshold its line is followed through the edge points in both
+// directions (tolerating gaps up to max_line_gap), refitted by total least squares as it
+// goes, and if the run is at least min_line_length long its points are removed from the
+// accumulator and the segment is reported.
+//
+// Accumulator: theta_bins normal angles over 180° (θ_i = i·180°/theta_bins) by rho bins of
+// rho_step pixels about the frame centre, 8-bit saturating counters. A point votes only for
+// the θ within ±vote_window_deg of its gradient direction (the line's normal is the gradient
+// direction), which cuts the votes per point from theta_bins to about
+// theta_bins·2·window/180 and keeps clutter of other orientations out of each bin.
+#pragma once
+#include <stdint.h>
+
+#include "lines/edge_list.h"
+#include "base/isqrt.h"
+#include "lines/segment.h"
+#include "base/status.h"
+
+namespace qt {
+
+struct HoughParams {
+    uint16_t theta_bins = 90;       // accumulator angle bins over 180° (2° each at 90)
+    uint16_t rho_step = 2;          // accumulator distance bin, pixels: 1, 2 or 4
+    uint16_t threshold = 12;        // votes a bin needs before its line is followed (1..255)
+    uint16_t min_line_length = 20;  // shortest segment reported, pixels
+    uint16_t max_line_gap = 4;      // longest run of missing edge pixels inside a segment, pixels
+    uint16_t vote_window_deg = 24;  // ± degrees around the gradient direction; 90 or more: all θ
+    uint16_t corridor = 1;          // pixels either side of the line searched while following it
+    uint32_t max_walk_steps = 200000;  // bound on line-following work per frame (steps)
+    uint64_t seed = 1;              // visiting order
+};
+
+struct HoughStats {
+    uint32_t points_visited = 0;     // edge points that voted
+    uint32_t votes = 0;              // accumulator increments
+    uint32_t saturated_votes = 0;    // increments lost to a bin at 255
+    uint32_t lines_followed = 0;     // bins that reached the threshold
+    uint32_t walk_steps = 0;         // pixels stepped while following lines
+    uint16_t segments = 0;           // segments reported
+    uint16_t segments_dropped = 0;   // segments found with the output full: the shortest of
+                                     // those found and the new one is dropped
+    bool budget_exhausted = false;   // stopped at max_walk_steps: not every point was visited
+};
+
+// Working memory of PPHT, as a view (see HoughStorage for the owning type).
+struct HoughWorkspace {
+    uint8_t* bins;          // theta_bins × rho bins counters
+    uint32_t bin_capacity;
+    int16_t* cos_q14;       // per θ bin, 1.0 = 2^14
+    int16_t* sin_q14;
+    uint16_t theta_capacity;
+};
+
+// Rho bins on each side of the frame centre: ceil(R / rho_step), R = floor(distance from the
+// centre to a corner) + 1 pixels.
+constexpr uint32_t hough_rho_half_bins(uint32_t width, uint32_t height, uint32_t rho_step) {
+    const uint32_t hx = (width + 1) / 2, hy = (height + 1) / 2;
+    return (isqrt32(hx * hx + hy * hy) + 1u + rho_step - 1u) / rho_step;
+}
+
+// Accumulator bins a frame needs: theta_bins × (2 · half + 1). Compile-time capacities
+// (line_detector.h) and the run-time check use this one formula.
+constexpr uint32_t hough_bins_for(uint32_t width, uint32_t height, uint32_t theta_bins, uint32_t rho_step) {
+    return theta_bins * (2 * hough_rho_half_bins(width, height, rho_step) + 1);
+}
+
+// Runs PPHT over `edges` of a width × height frame. Segments go to out[0 .. *count). Returns
+// bad_size for a bad frame or parameters that need more bins than the workspace holds
+// (nothing is written then); ok otherwise — capacity and budget limits are in `stats`.
+// Marks the edge points' states (voted, consumed) as it goes.
+Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& params,
+                      const HoughWorkspace& ws, Segment* out, uint16_t out_capacity,
+                      uint16_t* count, HoughStats* stats);
+
+// Owning storage: BinCapacity bytes of counters + 4·MaxThetaBins bytes of tables.
+template <uint32_t BinCapacity, uint16_t MaxThetaBins>
+struct HoughStorage {
+    uint8_t bins[BinCapacity] = {};
+    int16_t cos_q14[MaxThetaBins] = {};
+    int16_t sin_q14[MaxThetaBins] = {};
+    HoughWorkspace view() { return HoughWorkspace{bins, BinCapacity, cos_q14, sin_q14, MaxThetaBins}; }
+};
+
+}  // namespace qt

@@ -1,0 +1,177 @@
+// The lines stage of one frame, all memory inside, fixed at compile time: gradient (or words
+// from the FPGA) -> edges -> PPHT segments -> clustered lines, ends joined at corners. Camera rows go through the
+// gradient and NMS without forming gradient words (edge_stage.h: same edges, less work).
+//
+//   static qt::LineDetectorQvga det;           // ~44 KiB, see ram_bytes()
+//   det.begin_frame(320, 240, params);
+//   for each camera row: det.push_row(row, 320);        // or push_gradient_row(words, 320)
+//   det.finish();                              // runs PPHT and clustering
+//   det.lines(), det.line_count(), det.stats()
+#pragma once
+#include <stdint.h>
+
+#include "lines/edge_stage.h"
+#include "gradient/gradient_stage.h"
+#include "lines/hough.h"
+#include "lines/line_cluster.h"
+
+namespace qt {
+
+struct LineParams {
+    uint16_t edge_threshold = 40;  // L1 gradient magnitude for an edge, grey levels (1..510)
+    HoughParams hough;
+    ClusterParams cluster;
+    CornerParams corners;
+};
+
+// The stages of finish(), in order: PPHT; clustering and corner joining; the quadrangle rules
+// (board_detector.h). finish(mark) calls mark(stage) as each ends, so a caller can time them.
+enum class FinishStage : uint8_t { hough, cluster, quads };
+
+struct LineStats {
+    uint32_t edges = 0;           // edge points kept
+    uint32_t edges_dropped = 0;   // edge points lost to the edge capacity
+    HoughStats hough;
+    ClusterStats cluster;
+};
+
+template <uint16_t MaxWidth, uint16_t MaxHeight, uint16_t EdgeCapacity, uint32_t HoughBins,
+          uint16_t MaxThetaBins, uint16_t MaxSegments, uint16_t MaxLines>
+class LineDetector {
+    static_assert(MaxSegments <= 255, "clustering handles up to 255 segments");
+
+public:
+    // Bytes of RAM one detector occupies (all of it static when the object is).
+    static constexpr uint32_t ram_bytes() { return sizeof(LineDetector); }
+    static constexpr uint16_t max_lines() { return MaxLines; }
+
+    // bad_size (and no frame: rows and finish() get not_in_frame) when a dimension is 0 or
+    // above capacity; previous_frame_incomplete when rows of the frame in progress were missing
+    // (the new frame has started all the same).
+    Status begin_frame(uint16_t width, uint16_t height, const LineParams& params) {
+        params_ = params;
+        stats_ = LineStats{};
+        segment_count_ = line_count_ = 0;
+        width_ = height_ = 0;  // until the frame has begun: finish() then says not_in_frame
+        // Rows missing from the open frame: the edge stage knows, as both paths feed it (the
+        // gradient stage is never fed by push_gradient_row, so it cannot tell).
+        const bool abandoned = open_ && edge_stage_.in_frame();
+        open_ = false;
+        if (height > MaxHeight) return Status::bad_size;
+        edges_view_ = edges_.view();
+        gradient_.kernel.edge_threshold = params.edge_threshold;
+        Status s = gradient_.begin_frame(width, height);
+        if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
+        const Status e = edge_stage_.begin_frame(width, height, params.edge_threshold, edges_view_);
+        if (e != Status::ok) return e;
+        width_ = width;
+        height_ = height;
+        open_ = true;
+        return abandoned ? Status::previous_frame_incomplete : Status::ok;
+    }
+
+    // A camera row (grey levels). A refused row (bad_row_length) abandons the frame: later rows
+    // and finish() get not_in_frame until the next begin_frame().
+    Status push_row(const uint8_t* pixels, uint16_t length) {
+        // The edge stage, fed by both paths, leaves the frame with its last row: a camera row
+        // after a frame of gradient words is a row after the last one too.
+        if (!open_ || !edge_stage_.in_frame()) return Status::not_in_frame;
+        Status edge_status = Status::ok;
+        const Status s = gradient_.push_row(pixels, length, [&](uint16_t, const uint16_t* packed, uint16_t n) {
+            const Status e = edge_stage_.push_packed_row(packed, n);
+            if (e != Status::ok) edge_status = e;
+        });
+        return row_status(s != Status::ok ? s : edge_status);
+    }
+
+    // A row of gradient words (from the FPGA block), instead of push_row; the same statuses.
+    Status push_gradient_row(const gradient_word* words, uint16_t width) {
+        if (!open_) return Status::not_in_frame;
+        return row_status(edge_stage_.push_row(words, width));
+    }
+
+    // After the last row: PPHT and clustering. not_in_frame if rows are missing, the frame
+    // was abandoned or already finished; capacity_exceeded when edges, segments or clusters were dropped or PPHT
+    // ran out of its walk budget (the lines found are valid; stats() says what was cut).
+    Status finish() {
+        return finish([](FinishStage) {});
+    }
+    // The same, calling mark(stage) as each stage ends (for timing them).
+    template <class Mark>
+    Status finish(Mark&& mark) {
+        if (!open_ || edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
+            return Status::not_in_frame;
+        open_ = false;  // once per frame: PPHT consumes the edge list
+        stats_.edges = edges_view_.size();
+        stats_.edges_dropped = edges_view_.dropped();
+        const Status h = hough_segments(edges_view_, width_, height_, params_.hough, hough_.view(),
+                                        segments_, MaxSegments, &segment_count_, &stats_.hough);
+        mark(FinishStage::hough);
+        if (h != Status::ok) return h;
+        const Status c = cluster_segments(segments_, segment_count_, params_.cluster, scratch_,
+                                          lines_, MaxLines, &line_count_, &stats_.cluster);
+        if (c != Status::ok) return c;
+        stats_.cluster.ends_joined = join_corners(lines_, line_count_, params_.corners, corners_);
+        mark(FinishStage::cluster);
+        const bool cut_short = stats_.edges_dropped > 0 || stats_.hough.segments_dropped > 0 ||
+                               stats_.hough.budget_exhausted || stats_.cluster.clusters_dropped > 0;
+        return cut_short ? Status::capacity_exceeded : Status::ok;
+    }
+
+    const Segment* segments() const { return segments_; }
+    uint16_t segment_count() const { return segment_count_; }
+    const Segment* lines() const { return lines_; }
+    uint16_t line_count() const { return line_count_; }
+    const LineStats& stats() const { return stats_; }
+    // Puts a refined line in place of line i (i < line_count(); others are ignored).
+    void replace_line(uint16_t i, const Segment& s) {
+        if (i < line_count_) lines_[i] = s;
+    }
+    // Adds a line found later (a quadrangle's completed side); false when the list is full.
+    bool append_line(const Segment& s) {
+        if (line_count_ == MaxLines) return false;
+        lines_[line_count_++] = s;
+        return true;
+    }
+    const EdgeList& edges() const { return edges_view_; }
+    uint16_t width() const { return width_; }    // of the frame begun last, pixels
+    uint16_t height() const { return height_; }
+
+    // RAM of the parts, bytes, for the README's table.
+    static constexpr uint32_t gradient_bytes() { return sizeof(GradientStage<MaxWidth, NmsRowKernel>); }
+    static constexpr uint32_t edge_stage_bytes() { return sizeof(EdgeStage<MaxWidth>); }
+    static constexpr uint32_t edge_list_bytes() { return sizeof(EdgeListStorage<EdgeCapacity, MaxHeight>); }
+    static constexpr uint32_t accumulator_bytes() { return sizeof(HoughStorage<HoughBins, MaxThetaBins>); }
+    static constexpr uint32_t line_list_bytes() {
+        return sizeof(Segment) * (MaxSegments + MaxLines) + MaxSegments + sizeof(CornerCandidate) * 2 * MaxLines;
+    }
+
+private:
+    // not_in_frame (a row after the last one) leaves the frame as it was; any other refusal
+    // abandons it.
+    Status row_status(Status s) {
+        if (s != Status::ok && s != Status::not_in_frame) open_ = false;
+        return s;
+    }
+
+    GradientStage<MaxWidth, NmsRowKernel> gradient_;  // pixels -> packed NMS rows, no words
+    EdgeStage<MaxWidth> edge_stage_;
+    EdgeListStorage<EdgeCapacity, MaxHeight> edges_;
+    EdgeList edges_view_ = edges_.view();
+    HoughStorage<HoughBins, MaxThetaBins> hough_;
+    Segment segments_[MaxSegments] = {};
+    Segment lines_[MaxLines] = {};
+    uint8_t scratch_[MaxSegments] = {};
+    CornerCandidate corners_[2 * MaxLines] = {};
+    LineParams params_;
+    LineStats stats_;
+    uint16_t width_ = 0, height_ = 0, segment_count_ = 0, line_count_ = 0;
+    bool open_ = false;  // a frame was begun and none of its rows refused
+};
+
+// QVGA: 320 × 240, 4096 edge points, 2° × 2 px accumulator, 64 segments, 32 lines.
+using LineDetectorQvga = LineDetector<320, 240, 4096, hough_bins_for(320, 240, 90, 2), 90, 64, 32>;
+// VGA: 640 × 480, 8192 edge points, 2° × 2 px accumulator, 128 segments, 64 lines.
+using LineDetectorVga = LineDetector<640, 480, 8192, hough_bins_for(640, 480, 90, 2), 90, 128, 64>;
+
+}  // namespace qt

@@ -1,0 +1,166 @@
+// The detection chain of one frame: the lines stage (line_detector.h), then the quadrangle
+// rules (quad_detector.h) on its clustered lines. All memory inside, fixed at compile time.
+//
+//   static qt::BoardDetectorQvga det;
+//   det.begin_frame(320, 240, params);
+//   for each camera row: det.push_row(row, 320);        // or push_gradient_row(words, 320)
+//   det.finish();                              // lines, then quadrangles
+//   det.quads()[0 .. det.quad_count()), best first; det.lines() for the lines stage
+#pragma once
+#include <stdint.h>
+
+#include "lines/line_detector.h"
+#include "quads/quad_detector.h"
+#include "quads/quad_refine.h"
+
+namespace qt {
+
+struct BoardParams {
+    LineParams lines;
+    QuadParams quads;
+    RefineParams refine;
+};
+
+template <class Lines, uint16_t PairCapacity, uint16_t MaxQuads>
+class BoardDetector {
+    static_assert(Lines::max_lines() > 4 * MaxQuads, "room for the completed sides beside the kept quadrangles' lines");
+
+public:
+    static constexpr uint32_t ram_bytes() { return sizeof(BoardDetector); }
+    static constexpr uint32_t quad_bytes() {
+        return sizeof(LinePair) * PairCapacity + sizeof(SinCos) * Lines::max_lines() +
+               (sizeof(Quad) + 5 * sizeof(Segment)) * MaxQuads;
+    }
+    static constexpr uint16_t max_quads() { return MaxQuads; }
+
+    Status begin_frame(uint16_t width, uint16_t height, const BoardParams& params) {
+        params_ = params;
+        quad_count_ = 0;
+        quad_stats_ = QuadStats{};
+        return lines_.begin_frame(width, height, params.lines);
+    }
+    Status push_row(const uint8_t* pixels, uint16_t length) { return lines_.push_row(pixels, length); }
+    Status push_gradient_row(const gradient_word* words, uint16_t width) {
+        return lines_.push_gradient_row(words, width);
+    }
+
+    // After the last row. Errors of the lines stage are returned as they are; otherwise the
+    // quadrangles are searched and capacity_exceeded reports a capacity that filled in either
+    // stage (the results are valid, the stats say what was cut).
+    Status finish() {
+        return finish([](FinishStage) {});
+    }
+    // The same, calling mark(stage) as each stage ends (line_detector.h's FinishStage).
+    template <class Mark>
+    Status finish(Mark&& mark) {
+        const Status l = lines_.finish(mark);
+        if (l != Status::ok && l != Status::capacity_exceeded) return l;
+        const Status q = detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(), params_.quads, pairs_,
+                                      PairCapacity, normals_, quads_, MaxQuads, &quad_count_, &quad_stats_, completed_);
+        // Each candidate's sides refitted to the edge points between its corners and verified
+        // by that evidence, which also becomes its score.
+        uint16_t kept = 0;
+        for (uint16_t k = 0; k < quad_count_; ++k) {
+            Quad quad = quads_[k];
+            bool seen = false;
+            for (uint16_t j = 0; j < kept && !seen; ++j) seen = same_corners(quads_[j], quad, params_.refine.duplicate_distance);
+            if (seen) continue;
+            const Segment* side_lines[4];
+            for (int i = 0; i < 4; ++i)
+                side_lines[i] = quad.lines[i] == kCompletedSide ? &completed_[k] : &lines_.lines()[quad.lines[i]];
+            Segment sides[4];
+            SideEvidence evidence;
+            refine_quad(lines_.edges(), side_lines, params_.refine, quad, sides, &evidence);
+            uint8_t completed = 0;
+            for (int i = 0; i < 4; ++i) completed = static_cast<uint8_t>(completed | ((quad.lines[i] == kCompletedSide) << i));
+            if (!verify_evidence(evidence, completed, params_.refine, &quad.score)) {
+                ++quad_stats_.rejected_evidence;
+                continue;
+            }
+            // Two candidates that refit to one quadrangle (corners within collinear_distance)
+            // are one: the better scored stays.
+            uint16_t dup = 0;
+            while (dup < kept && !same_corners(quads_[dup], quad, params_.quads.collinear_distance)) ++dup;
+            if (dup < kept) {
+                if (quads_[dup].score >= quad.score) continue;
+                for (uint16_t j = dup; j + 1u < kept; ++j) {
+                    quads_[j] = quads_[j + 1];
+                    for (int i = 0; i < 4; ++i) sides_[j][i] = sides_[j + 1][i];
+                }
+                --kept;
+            }
+            uint16_t at = kept;  // insertion by score, earlier rank first among equals
+            while (at > 0 && quad.score > quads_[at - 1].score) {
+                quads_[at] = quads_[at - 1];
+                for (int i = 0; i < 4; ++i) sides_[at][i] = sides_[at - 1][i];
+                --at;
+            }
+            quads_[at] = quad;
+            for (int i = 0; i < 4; ++i) sides_[at][i] = sides[i];
+            ++kept;
+        }
+        quad_count_ = kept;
+        quad_stats_.quads = kept;
+        place_sides();
+        mark(FinishStage::quads);
+        if (q != Status::ok && q != Status::capacity_exceeded) return q;
+        return l == Status::ok && q == Status::ok ? Status::ok : Status::capacity_exceeded;
+    }
+
+    const Lines& lines() const { return lines_; }
+    const Quad* quads() const { return quads_; }
+    uint16_t quad_count() const { return quad_count_; }
+    const QuadStats& quad_stats() const { return quad_stats_; }
+
+private:
+    // Every kept quadrangle's completed sides join the line list (so that Quad::lines index it
+    // for every quadrangle), replacing the weakest lines no kept quadrangle uses when it is
+    // full; then the best quadrangle's refitted sides replace its lines (what a tracker takes).
+    void place_sides() {
+        for (uint16_t k = 0; k < quad_count_; ++k)
+            for (int i = 0; i < 4; ++i) {
+                if (quads_[k].lines[i] != kCompletedSide) continue;
+                uint16_t slot = lines_.line_count();
+                if (!lines_.append_line(sides_[k][i])) {
+                    while (slot-- > 0 && used(slot)) {
+                    }
+                    lines_.replace_line(slot, sides_[k][i]);  // slot < line_count: some line is unused
+                }
+                quads_[k].lines[i] = static_cast<uint8_t>(slot);
+            }
+        if (quad_count_ > 0)
+            for (int i = 0; i < 4; ++i) lines_.replace_line(quads_[0].lines[i], sides_[0][i]);
+    }
+    bool used(uint16_t line) const {
+        for (uint16_t k = 0; k < quad_count_; ++k)
+            for (int i = 0; i < 4; ++i)
+                if (quads_[k].lines[i] == line) return true;
+        return false;
+    }
+
+    static bool same_corners(const Quad& a, const Quad& b, q16_16 tolerance) {
+        for (int i = 0; i < 4; ++i) {
+            const int64_t dx = static_cast<int64_t>(a.corners[i].x.raw) - b.corners[i].x.raw;
+            const int64_t dy = static_cast<int64_t>(a.corners[i].y.raw) - b.corners[i].y.raw;
+            if (dx > tolerance.raw || dx < -tolerance.raw || dy > tolerance.raw || dy < -tolerance.raw) return false;
+        }
+        return true;
+    }
+
+    Lines lines_;
+    LinePair pairs_[PairCapacity] = {};
+    SinCos normals_[Lines::max_lines()] = {};
+    Quad quads_[MaxQuads] = {};
+    Segment sides_[MaxQuads][4] = {};  // each kept quadrangle's refitted sides
+    Segment completed_[MaxQuads] = {};  // detect_quads' completed sides
+    BoardParams params_;
+    QuadStats quad_stats_;
+    uint16_t quad_count_ = 0;
+};
+
+// QVGA: the QVGA lines stage, 128 parallel pairs, the best 4 quadrangles.
+using BoardDetectorQvga = BoardDetector<LineDetectorQvga, 128, 4>;
+// VGA: the VGA lines stage, 256 parallel pairs, the best 4 quadrangles.
+using BoardDetectorVga = BoardDetector<LineDetectorVga, 256, 4>;
+
+}  // namespace qt

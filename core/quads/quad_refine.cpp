@@ -1,0 +1,229 @@
+#include "quads/quad_refine.h"
+
+#include "gradient/gradient_word.h"
+#include "lines/line_fit.h"
+#include "quads/quad_rules.h"
+
+namespace qt {
+
+namespace {
+
+// A line walked along: origin (1/32 px), unit direction u (q2_30) and the stretch between the
+// positions t0 < t1 along u from the origin (1/32 px).
+struct Walk {
+    int32_t ox32, oy32;
+    int32_t ux, uy;
+    int32_t t0, t1;
+};
+
+int32_t to32(q16_16 v) { return static_cast<int32_t>(shr_round_half_away(v.raw, 11)); }  // q16.16 -> 1/32 px
+
+int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
+
+constexpr int32_t kMaxSteps = 2048;  // pixels along a side: frames up to 2048 px wide and high
+
+// The side's gradient direction bin (dark to bright across it) and whether the polarity is
+// known: the line's bright side lies along its normal θ (bright_side > 0) or against it.
+struct Polarity {
+    uint32_t bin;
+    bool known;
+};
+
+Polarity polarity_of(const Segment& line) {
+    const SinCos n = sin_cos(line.theta);
+    const int32_t sign = line.bright_side < 0 ? -1 : 1;
+    // q2_30 -> ±2^16: direction_bin needs (lo << 8) to fit 32 bits.
+    return {direction_bin(sign * (n.cos.raw >> 14), sign * (n.sin.raw >> 14)), line.bright_side != 0};
+}
+
+bool along_side(uint32_t dir, Polarity p) {
+    if (p.known) {
+        const uint32_t d = (dir - p.bin) & 15u;
+        return d <= 2u || d >= 14u;
+    }
+    const uint32_t d = (dir - p.bin) & 7u;
+    return d <= 2u || d >= 6u;
+}
+
+// Adds to m (coordinates relative to the walk's origin) every edge point within band32 of the
+// walk's line between t0 and t1 whose gradient runs across the line with the side's polarity;
+// returns the major-axis steps (pixel columns of a side nearer horizontal, rows otherwise)
+// that held at least one such point and sets *steps to the steps the stretch spans. The edge
+// list is searched a row at a time (one search per row, not per pixel).
+uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity pol, Moments& m, uint32_t* steps,
+                uint8_t* ends) {
+    const bool major_is_y = abs32(w.uy) > abs32(w.ux);
+    const int64_t u_major = major_is_y ? w.uy : w.ux, u_minor = major_is_y ? w.ux : w.uy;
+    const int32_t o_major = major_is_y ? w.oy32 : w.ox32, o_minor = major_is_y ? w.ox32 : w.oy32;
+    // Major coordinates of the stretch's ends, whole pixels, in increasing order.
+    int64_t m0 = o_major + ((static_cast<int64_t>(w.t0) * u_major) >> 30);
+    int64_t m1 = o_major + ((static_cast<int64_t>(w.t1) * u_major) >> 30);
+    if (m0 > m1) {
+        const int64_t t = m0;
+        m0 = m1;
+        m1 = t;
+    }
+    const int32_t first = static_cast<int32_t>((m0 + 31) >> 5);
+    int32_t last = static_cast<int32_t>(m1 >> 5);
+    if (last - first >= kMaxSteps) last = first + kMaxSteps - 1;
+    *steps = last >= first ? static_cast<uint32_t>(last - first + 1) : 0u;
+    *ends = 0;
+    if (*steps == 0) return 0;
+    // Minor-axis half window: band / |u_major| (|u_major| >= 1/√2), whole pixels, plus one.
+    const int32_t reach = static_cast<int32_t>(((static_cast<int64_t>(band32) << 30) / (u_major < 0 ? -u_major : u_major)) >> 5) + 1;
+    // Slopes in q16.16, one division each (a 64-bit division is a library call on Cortex-M):
+    // minor per major (|.| <= 1) and major per minor (0 when the line runs along a row or
+    // column within 2^-14, where every column of the stretch is searched).
+    const int64_t slope = (u_minor << 16) / u_major;
+    const int64_t inverse = (u_minor < 0 ? -u_minor : u_minor) >= (int64_t{1} << 16) ? (u_major << 16) / u_minor : 0;
+    auto minor_at = [&](int32_t major) {  // the line's minor coordinate at a major one, whole pixels
+        return static_cast<int32_t>((o_minor + ((static_cast<int64_t>(major * 32 - o_major) * slope) >> 16) + 16) >> 5);
+    };
+    uint32_t marks[kMaxSteps / 32] = {};  // bit k: step first + k holds a point
+    auto consider = [&](uint32_t i, int32_t major) {
+        const edge_point p = edges[static_cast<uint16_t>(i)];
+        if (major < first || major > last || !along_side(ep::dir(p), pol)) return;
+        const int64_t dx = ep::x32(p) - w.ox32, dy = ep::y32(p) - w.oy32;
+        const int64_t d = (dx * -static_cast<int64_t>(w.uy) + dy * w.ux) >> 30;  // across, 1/32 px
+        if (d > band32 || d < -band32) return;
+        m.add(static_cast<int32_t>(dx), static_cast<int32_t>(dy));
+        const uint32_t k = static_cast<uint32_t>(major - first);
+        marks[k >> 5] |= 1u << (k & 31u);
+    };
+    uint32_t a = 0, b = 0;
+    if (major_is_y) {
+        for (int32_t y = first; y <= last; ++y) {
+            const int32_t centre = minor_at(y);
+            edges.span(centre - reach, centre + reach, y, &a, &b);
+            for (uint32_t i = a; i < b; ++i) consider(i, y);
+        }
+    } else {
+        // Rows the band crosses; in each, the columns where the line is within `reach` rows.
+        const int32_t ya = minor_at(first), yb = minor_at(last);
+        const int32_t lo = (ya < yb ? ya : yb) - reach, hi = (ya < yb ? yb : ya) + reach;
+        for (int32_t y = lo; y <= hi; ++y) {
+            int32_t x_lo = first, x_hi = last;
+            if (inverse != 0) {
+                const int64_t xa = o_major + ((static_cast<int64_t>((y - reach) * 32 - o_minor) * inverse) >> 16);
+                const int64_t xb = o_major + ((static_cast<int64_t>((y + reach) * 32 - o_minor) * inverse) >> 16);
+                const int64_t l = ((xa < xb ? xa : xb) >> 5) - 1, h = ((xa < xb ? xb : xa) >> 5) + 1;
+                x_lo = l > first ? static_cast<int32_t>(l) : first;
+                x_hi = h < last ? static_cast<int32_t>(h) : last;
+            }
+            if (x_lo > x_hi) continue;
+            edges.span(x_lo, x_hi, y, &a, &b);
+            for (uint32_t i = a; i < b; ++i) consider(i, static_cast<int32_t>(ep::x(edges[static_cast<uint16_t>(i)])));
+        }
+    }
+    uint32_t held = 0;
+    const uint32_t quarter = *steps / 4;
+    for (uint32_t k = 0; k < *steps; ++k) {
+        if (((marks[k >> 5] >> (k & 31u)) & 1u) == 0) continue;
+        ++held;
+        if (k < quarter) *ends |= 1u;
+        if (*steps - 1 - k < quarter) *ends |= 2u;
+    }
+    // The walk may run either way along the side: bit 0 is the end at the walk's origin.
+    if ((major_is_y ? w.uy : w.ux) < 0) *ends = static_cast<uint8_t>(((*ends & 1u) << 1) | (*ends >> 1));
+    return held;
+}
+
+// One side: the walk between corners a and b, then around the first fit. False (line left
+// alone) when too few steps hold a point. *held and *steps: the evidence of the last walk.
+bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b, const RefineParams& p,
+                Segment& out, uint32_t* held, uint32_t* steps, uint8_t* ends) {
+    *held = *steps = 0;
+    *ends = 0;
+    const int64_t len = distance(a, b).raw;  // q16_16
+    const int32_t margin32 = to32(p.end_margin), len32 = static_cast<int32_t>(shr_round_half_away(len, 11));
+    if (len <= 0 || len32 <= 2 * margin32 + 64) return false;
+    Walk w{to32(a.x), to32(a.y), static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) << 30) / len),
+           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) << 30) / len), margin32, len32 - margin32};
+    const Polarity pol = polarity_of(line);
+    FittedLine fit{};
+    const int32_t bands[2] = {to32(p.band), to32(p.fine_band)};
+    uint32_t n = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        Moments m;
+        *held = gather(edges, w, bands[pass], pol, m, steps, ends);
+        if (*held * 100u < *steps * p.min_share_percent || m.n < 8 || !fit_line(m, w.ox32, w.oy32, fit)) return false;
+        n = static_cast<uint32_t>(m.n);
+        // Next: along the fit, over the same stretch (the corners projected onto it).
+        const int32_t ta = to32(along(fit, a.x, a.y)), tb = to32(along(fit, b.x, b.y));
+        const int32_t lo = ta < tb ? ta : tb, hi = ta < tb ? tb : ta;
+        w = Walk{to32(fit.mx), to32(fit.my), fit.dx.raw, fit.dy.raw, lo + margin32, hi - margin32};
+    }
+    q16_16 t1 = along(fit, line.x1, line.y1), t2 = along(fit, line.x2, line.y2);
+    if (t2 < t1) {
+        const q16_16 t = t1;
+        t1 = t2;
+        t2 = t;
+    }
+    out = make_segment(fit, t1, t2, static_cast<uint16_t>(n > 65535u ? 65535u : n));
+    // The polarity stays with the side: flip it when the new normal points the other way.
+    const SinCos before = sin_cos(line.theta), after = sin_cos(out.theta);
+    const int64_t dot = static_cast<int64_t>(before.cos.raw) * after.cos.raw + static_cast<int64_t>(before.sin.raw) * after.sin.raw;
+    out.bright_side = static_cast<int8_t>(dot < 0 ? -line.bright_side : line.bright_side);
+    return true;
+}
+
+}  // namespace
+
+uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4], const RefineParams& params, Quad& quad,
+                    Segment sides[4], SideEvidence* evidence) {
+    uint8_t refitted = 0;
+    Segment fitted[4];
+    SideEvidence found{};
+    for (int i = 0; i < 4; ++i) {
+        const Segment& line = *lines[i];
+        fitted[i] = line;
+        uint32_t held = 0, steps = 0;
+        uint8_t ends = 0;
+        if (refit_side(edges, line, quad.corners[i], quad.corners[(i + 1) & 3], params, fitted[i], &held, &steps, &ends))
+            refitted = static_cast<uint8_t>(refitted | (1u << i));
+        found.ends[i] = ends;
+        found.held[i] = static_cast<uint16_t>(held > 65535u ? 65535u : held);
+        found.steps[i] = static_cast<uint16_t>(steps > 65535u ? 65535u : steps);
+    }
+    if (evidence) *evidence = found;
+    for (int i = 0; i < 4; ++i) sides[i] = *lines[i];
+    if (refitted == 0) return 0;
+    Point16 c[4];
+    for (int i = 0; i < 4; ++i)
+        if (!intersect_lines(fitted[(i + 3) & 3], fitted[i], c[i])) return 0;
+    if (!is_convex(c) || shoelace2(c) >= 0) return 0;
+    int first = 0;
+    for (int i = 1; i < 4; ++i)
+        if (static_cast<int64_t>(c[i].x.raw) + c[i].y.raw < static_cast<int64_t>(c[first].x.raw) + c[first].y.raw) first = i;
+    const uint8_t old_lines[4] = {quad.lines[0], quad.lines[1], quad.lines[2], quad.lines[3]};
+    uint8_t mask = 0;
+    for (int i = 0; i < 4; ++i) {
+        const int k = (i + first) & 3;
+        quad.corners[i] = c[k];
+        quad.lines[i] = old_lines[k];
+        sides[i] = fitted[k];
+        mask = static_cast<uint8_t>(mask | (((static_cast<uint32_t>(refitted) >> k) & 1u) << i));
+        if (evidence) {
+            evidence->held[i] = found.held[k];
+            evidence->steps[i] = found.steps[k];
+            evidence->ends[i] = found.ends[k];
+        }
+    }
+    return mask;
+}
+
+bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params, q16_16* share) {
+    uint32_t held = 0, steps = 0;
+    bool sides_ok = true;
+    for (int i = 0; i < 4; ++i) {
+        held += e.held[i];
+        steps += e.steps[i];
+        const bool hidden = ((static_cast<uint32_t>(completed) >> i) & 1u) != 0;
+        const uint32_t least = hidden ? params.min_hidden_side_evidence_percent : params.min_side_evidence_percent;
+        sides_ok = sides_ok && e.steps[i] > 0 && e.ends[i] == 3u && e.held[i] * 100u >= e.steps[i] * least;
+    }
+    *share = q16_16::from_raw(steps > 0 ? static_cast<int32_t>((static_cast<int64_t>(held) << 16) / steps) : 0);
+    return !params.verify || (sides_ok && held * 100u >= steps * params.min_evidence_percent);
+}
+
+}  // namespace qt

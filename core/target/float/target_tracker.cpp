@@ -1,0 +1,192 @@
+#include "target/float/target_tracker.h"
+
+#include <math.h>  // sqrtf
+
+namespace qt {
+
+const char* target_state_name(TargetState s) {
+    switch (s) {
+        case TargetState::measured: return "measured";
+        case TargetState::reacquired: return "reacquired";
+        case TargetState::predicted: return "predicted";
+        case TargetState::out_of_view: return "out_of_view";
+        case TargetState::lost: return "lost";
+    }
+    return "unknown";
+}
+
+const char* target_method_name(TargetMethod m) {
+    switch (m) {
+        case TargetMethod::fused: return "fused";
+        case TargetMethod::filter_only: return "filter_only";
+        case TargetMethod::homography_only: return "homography_only";
+        case TargetMethod::template_only: return "template_only";
+    }
+    return "unknown";
+}
+
+void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
+                         const TargetTrackerParams& params) {
+    params_ = params;
+    kf_.init(x, y, params.kalman);
+    acc_ = Homography{};
+    last_h_ = Homography{};
+    width_ = width;
+    height_ = height;
+    state_ = TargetState::measured;
+    geometry_ok_ = true;
+    unseen_ = 0;
+    bad_geometry_ = 0;
+    last_x_ = x;
+    last_y_ = y;
+}
+
+bool TargetTracker::in_image(float x, float y) const {
+    // Pixel centres at integers: the image covers [-0.5, width - 0.5) × [-0.5, height - 0.5).
+    return x >= -0.5f && y >= -0.5f && x < static_cast<float>(width_) - 0.5f &&
+           y < static_cast<float>(height_) - 0.5f;
+}
+
+bool TargetTracker::accumulation_plausible() const {
+    // A maps the estimate to a finite point, and the area around it by a factor within
+    // [1/max_scale², max_scale²] (a camera whose altitude changed more than max_scale-fold since
+    // frame m, or an A gone wrong).
+    float j[4];
+    if (!homography_jacobian(acc_, kf_.x(), kf_.y(), j)) return false;
+    const float det = j[0] * j[3] - j[1] * j[2];
+    const float s2 = params_.max_scale * params_.max_scale;
+    return det >= 1.0f / s2 && det <= s2;
+}
+
+void TargetTracker::position(float& x, float& y) const {
+    x = kf_.x();
+    y = kf_.y();
+    float xo, yo;
+    if (apply_homography(acc_, x, y, xo, yo)) {
+        x = xo;
+        y = yo;
+    }
+}
+
+SearchWindow TargetTracker::predict(const FrameGeometry& g) {
+    SearchWindow w;
+    if (state_ == TargetState::lost) return w;
+    switch (params_.method) {
+        case TargetMethod::template_only:
+            w.x = last_x_;
+            w.y = last_y_;
+            w.radius = params_.template_radius_px;
+            return w;
+        case TargetMethod::filter_only:
+            break;
+        case TargetMethod::fused:
+        case TargetMethod::homography_only: {
+            geometry_ok_ = g.valid && g.reprojection_px <= params_.gate_rep_px;
+            if (geometry_ok_) {
+                last_h_ = g.h;
+                bad_geometry_ = 0;
+            } else if (bad_geometry_ < UINT16_MAX) {
+                ++bad_geometry_;
+            }
+            Homography next;
+            // A product that degenerates leaves A as it was; the plausibility test below and
+            // the lost rule catch an A that has stopped describing the camera.
+            if (multiply_homographies(last_h_, acc_, next)) acc_ = next;
+            break;
+        }
+    }
+    kf_.predict();
+    position(w.x, w.y);
+    if (params_.method == TargetMethod::homography_only) return w;  // radius 0: never measured
+    // S in the current image, to first order: J S Jᵀ with J the Jacobian of A at x̂.
+    const Innovation gate = kf_.gate();
+    float j[4] = {1, 0, 0, 1};
+    homography_jacobian(acc_, kf_.x(), kf_.y(), j);
+    const float s00 = j[0] * j[0] * gate.s[0] + 2 * j[0] * j[1] * gate.s[1] + j[1] * j[1] * gate.s[2];
+    const float s11 = j[2] * j[2] * gate.s[0] + 2 * j[2] * j[3] * gate.s[1] + j[3] * j[3] * gate.s[2];
+    const float r = params_.gate_sigmas * sqrtf(s00 > s11 ? s00 : s11);
+    w.radius = r < params_.min_radius_px ? params_.min_radius_px
+             : r > params_.max_radius_px ? params_.max_radius_px : r;
+    return w;
+}
+
+SearchWindow TargetTracker::expected() const {
+    TargetTracker copy = *this;
+    FrameGeometry none;
+    none.h = last_h_;
+    none.valid = true;
+    return copy.predict(none);
+}
+
+TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
+    TargetEstimate e;
+    const bool found = m.found && m.score >= params_.min_score;
+    if (state_ != TargetState::lost && params_.method == TargetMethod::template_only) {
+        if (found) {
+            state_ = unseen_ > 0 ? TargetState::reacquired : TargetState::measured;
+            last_x_ = m.x;
+            last_y_ = m.y;
+            unseen_ = 0;
+        } else {
+            if (unseen_ < UINT16_MAX) ++unseen_;
+            state_ = in_image(last_x_, last_y_) ? TargetState::predicted : TargetState::out_of_view;
+            if (unseen_ > params_.max_unseen) state_ = TargetState::lost;
+        }
+        e.state = state_;
+        e.x = last_x_;
+        e.y = last_y_;
+        e.unseen = unseen_;
+        return e;
+    }
+    const Innovation gate = kf_.gate();
+    float j[4] = {1, 0, 0, 1};
+    homography_jacobian(acc_, kf_.x(), kf_.y(), j);
+    const float det_j = j[0] * j[3] - j[1] * j[2];
+    e.det_s = gate.det_s * det_j * det_j;  // det(J S Jᵀ), px⁴ in the current image
+    if (state_ == TargetState::lost) {
+        position(e.x, e.y);
+        e.state = state_;
+        e.unseen = unseen_;
+        return e;
+    }
+    bool accepted = false;
+    Innovation in;
+    const bool uses_measurements = params_.method != TargetMethod::homography_only;
+    const bool geometry_needed = params_.method == TargetMethod::fused;
+    if (found && uses_measurements && (geometry_ok_ || !geometry_needed)) {
+        // The measurement in the reference image: A⁻¹ z (equation (10)).
+        float zx = m.x, zy = m.y;
+        Homography inv;
+        const bool mapped = invert_homography(acc_, inv) && apply_homography(inv, m.x, m.y, zx, zy);
+        if (mapped) {
+            in = kf_.innovation(zx, zy);
+            e.nds = in.nds;
+            accepted = in.nds <= params_.gate_nds;
+        }
+    }
+    if (accepted) {
+        kf_.update(in);
+        state_ = unseen_ > 0 ? TargetState::reacquired : TargetState::measured;
+        unseen_ = 0;
+        if (params_.method == TargetMethod::fused && params_.reset && in.nds <= params_.reset_nds &&
+            e.det_s <= params_.reset_det_s && kf_.change_frame(acc_)) {
+            acc_ = Homography{};  // Table III: the accumulation starts again at this frame
+            e.reset = true;
+        }
+    } else {
+        if (unseen_ < UINT16_MAX) ++unseen_;
+        float x, y;
+        position(x, y);
+        state_ = in_image(x, y) ? TargetState::predicted : TargetState::out_of_view;
+        const bool geometry_gone =
+            params_.method != TargetMethod::filter_only &&
+            (bad_geometry_ > params_.max_bad_geometry || !accumulation_plausible());
+        if (unseen_ > params_.max_unseen || geometry_gone) state_ = TargetState::lost;
+    }
+    position(e.x, e.y);
+    e.state = state_;
+    e.unseen = unseen_;
+    return e;
+}
+
+}  // namespace qt

@@ -1,0 +1,134 @@
+// The target tracker (filtering-geometry.txt §III, Fig. 3, Tables II and III): a Kalman filter
+// (target_kalman.h) fused with the frame-to-frame homographies of the ground, accumulated while
+// the target is not measured and reset when it is found again.
+//
+// Coordinates. The filter lives in the image of a reference frame m; the accumulated homography
+// A = Π H(i−1→i) for i = m+1..n (equation (11)) maps that image into the current frame n. A
+// measurement z of frame n enters the filter as A⁻¹ z (equation (10)); the position reported in
+// frame n is A x̂. Camera motion is therefore carried by A and the filter models only the
+// target's own motion over the ground. While the target is perturbed (occluded, a bad match)
+// or out of view, nothing is measured: the filter predicts and A keeps accumulating, so the
+// reported position follows the ground and the target's last estimated velocity, also outside
+// the image. Table III's reset: when a measurement is accepted with D_nds <= reset_nds and
+// det S <= reset_det_s, the filter is carried into frame n (TargetKalman::change_frame(A)) and
+// A becomes the identity (m = n); the drift accumulated in A is cleared.
+//
+// Gates (Table II): a measurement is used only when D_nds (equation (6)) <= gate_nds and the
+// frame's homography is trustworthy: estimated, with its reprojection error (equation (7),
+// RMS over its inliers) <= gate_rep_px. A frame whose homography failed or is untrustworthy is
+// carried by the last good one (constant camera motion) and counted.
+//
+// States, per frame: measured (a measurement accepted), reacquired (the first accepted after
+// frames without one), predicted (none accepted; the target's estimated position is inside
+// the image), out_of_view (none accepted; outside the image), lost (terminal until init(): no
+// measurement for more than max_unseen frames, or more than max_bad_geometry consecutive
+// frames without a trustworthy homography while unseen, or A no longer a plausible camera
+// motion: it sends the estimate to infinity, or scales the area around it by a factor outside
+// [1/max_scale², max_scale²] — then A's position is not worth reporting).
+//
+// The comparison methods of the paper's §IV are modes of the same tracker (TargetMethod).
+// Float only, never double; no heap.
+#pragma once
+#include <stdint.h>
+
+#include "target/float/homography.h"
+#include "target/float/target_kalman.h"
+
+namespace qt {
+
+enum class TargetState : uint8_t { measured, reacquired, predicted, out_of_view, lost };
+const char* target_state_name(TargetState s);
+
+enum class TargetMethod : uint8_t {
+    fused,            // the paper's proposed method (this file's header)
+    filter_only,      // Kalman filter in image coordinates, gated measurements, no homography
+    homography_only,  // the initial position carried by the accumulated homography, never measured
+    template_only,    // the best template match near the last position, no filter, no gate
+};
+const char* target_method_name(TargetMethod m);
+
+struct TargetTrackerParams {
+    TargetMethod method = TargetMethod::fused;
+    bool reset = true;             // Table III's reset (false: A accumulates from frame 0, Fig. 12)
+    TargetKalmanParams kalman;
+    float min_score = 0.7f;        // a template match counts as found when its NCC >= this
+    float gate_nds = 9.21f;        // D_nds gate: χ²(2 dof) at 99 %
+    float gate_rep_px = 1.5f;      // homography trustworthy when its reprojection error <= this, px
+    float reset_nds = 5.99f;       // reset when D_nds <= this (χ²(2) at 95 %) ...
+    float reset_det_s = 2500.0f;   // ... and det S <= this, px⁴ (σ ≈ 7 px per axis; with the
+                                   // paper's Q, S never falls below q_pos + r ≈ 24 px² per axis)
+    float gate_sigmas = 3.0f;      // search radius = gate_sigmas · √(largest variance of S), px,
+    float min_radius_px = 4.0f;    //   clamped to [min_radius_px, max_radius_px]
+    float max_radius_px = 24.0f;
+    float template_radius_px = 16.0f;  // template_only: fixed search radius around the last match
+    uint16_t max_unseen = 400;         // lost after this many frames without a measurement
+    uint16_t max_bad_geometry = 15;    // lost after this many untrustworthy homographies in a row, unseen
+    float max_scale = 4.0f;            // lost when A scales the area at the estimate beyond max_scale²
+};
+
+// The frame's camera motion: the homography from the previous frame's image into this one.
+struct FrameGeometry {
+    bool valid = false;      // false: the estimate failed this frame
+    Homography h;            // previous → current image
+    float reprojection_px = 0;  // equation (7) as RMS over the inliers, px
+};
+
+// Where the caller should look for the target in the current frame.
+struct SearchWindow {
+    float x = 0, y = 0;   // centre, px (may lie outside the image)
+    float radius = 0;     // half side of the square of candidate centres, px; 0: do not search
+};
+
+// The best template match in the window, from the caller's template search.
+struct TargetMeasurement {
+    bool found = false;
+    float x = 0, y = 0;   // matched target centre, px
+    float score = 0;      // NCC, -1..1
+};
+
+struct TargetEstimate {
+    TargetState state = TargetState::lost;
+    float x = 0, y = 0;   // target centre in the current image, px (outside the image when out of view)
+    float nds = 0;        // D_nds of the measurement considered (0 when none)
+    float det_s = 0;      // det S of the prediction, px⁴
+    bool reset = false;   // the accumulation was reset this frame
+    uint16_t unseen = 0;  // frames since the last accepted measurement
+};
+
+class TargetTracker {
+public:
+    // Starts on the target's centre (x, y) in an image of width × height px.
+    void init(float x, float y, uint16_t width, uint16_t height, const TargetTrackerParams& params);
+    // First half of a frame: carries the estimate into the current image with the frame's
+    // geometry and predicts. Returns where to search (radius 0: nothing to search, e.g. lost
+    // or homography_only).
+    SearchWindow predict(const FrameGeometry& geometry);
+    // Where predict() would look if this frame's homography equalled the last trustworthy one
+    // (constant camera motion): for capturing the search region while the frame's rows stream
+    // by, before its homography is known. Changes nothing.
+    SearchWindow expected() const;
+    // Second half: the search result (found == false when nothing matched well enough).
+    TargetEstimate update(const TargetMeasurement& m);
+
+    TargetState state() const { return state_; }
+    const TargetTrackerParams& params() const { return params_; }
+    const Homography& accumulated() const { return acc_; }
+
+private:
+    bool in_image(float x, float y) const;
+    bool accumulation_plausible() const;
+    void position(float& x, float& y) const;  // A x̂, current image
+
+    TargetTrackerParams params_;
+    TargetKalman kf_;
+    Homography acc_;        // reference image → current image
+    Homography last_h_;     // the last trustworthy frame homography
+    uint16_t width_ = 0, height_ = 0;
+    TargetState state_ = TargetState::lost;
+    bool geometry_ok_ = false;
+    uint16_t unseen_ = 0;
+    uint16_t bad_geometry_ = 0;
+    float last_x_ = 0, last_y_ = 0;  // template_only: the last match
+};
+
+}  // namespace qt

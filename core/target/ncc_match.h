@@ -1,0 +1,178 @@
+// Zero-mean normalised cross-correlation of grey-level blocks in Q15, and matching of two
+// frames' Harris corners by the NCC of their patches (filtering-geometry paper, Table I,
+// step 2). Integer only.
+//
+// For n = w·h pixels with sums Sa = Σa, Sb = Σb, Saa = Σa², Sbb = Σb², Sab = Σab:
+//   ncc = (n·Sab − Sa·Sb) / sqrt((n·Saa − Sa²)·(n·Sbb − Sb²))  ∈ [−1, 1]
+//   q15 = round(32768·ncc) clamped to [−32768, 32767]
+// Bounds: n <= kNccMaxPixels = 1024, so Sa <= 2^18, Saa and Sab <= 1024·255² < 2^27 (32-bit
+// sums); the variance terms n·Saa − Sa² are n²·σ² <= 2^20·127.5² < 2^34 and their product
+// < 2^68, computed in 64 bits with a 2-bit pre-shift when it would overflow; the root is
+// taken of that product normalised to [2^62, 2^64) (32 significant bits), so q15 is within
+// 1 of round(32768·ncc).
+#pragma once
+#include <stdint.h>
+
+#include "target/feature.h"
+
+namespace qt {
+
+constexpr uint32_t kNccMaxPixels = 1024;  // e.g. 32×32; bounds every sum above
+// Flat block: n·Σa² − (Σa)² < n²·min_variance, i.e. variance below min_variance grey levels²
+// per pixel. 4 = a standard deviation of 2 grey levels, about a camera's noise: such a block
+// has no structure to correlate.
+constexpr uint32_t kNccMinVariance = 4;
+
+// q15: 32767 ≈ +1, −32768 = −1. flat: either block is flat (or the size is 0 or above
+// kNccMaxPixels): q15 = 0, no division made.
+struct NccScore {
+    int16_t q15;
+    bool flat;
+};
+
+// The sums over a pair of blocks, for callers that keep some of them (a template's Σa, Σa²
+// are the same at every search position).
+struct NccSums {
+    uint32_t n = 0;  // pixels, <= kNccMaxPixels
+    uint32_t sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+};
+
+// True when n·sum_sq − sum² < n²·min_variance, or == 0 (for any min_variance); n <= kNccMaxPixels.
+bool ncc_flat(uint32_t n, uint32_t sum, uint32_t sum_sq, uint32_t min_variance);
+
+// The score from the sums: one 64-bit square root (isqrt64) and one 64-bit division.
+NccScore ncc_from_sums(const NccSums& s, uint32_t min_variance = kNccMinVariance);
+
+// w×h blocks at a and b (row strides in bytes).
+NccScore ncc_q15(const uint8_t* a, uint32_t a_stride, const uint8_t* b, uint32_t b_stride,
+                 uint16_t w, uint16_t h, uint32_t min_variance = kNccMinVariance);
+
+struct MatchConfig {
+    uint16_t search_radius_px = 24;      // |cur − (prev + offset)| <= this in x and y each, px
+    int16_t offset_x = 0, offset_y = 0;  // expected displacement prev → cur, px
+    int16_t min_score_q15 = 26214;       // 0.8
+    bool mutual = true;                  // keep a pair only when each is the other's best
+    // Best − second best score of a prev corner's candidates, Q15; 1638 ≈ 0.05: a repeated
+    // pattern gives two near-equal bests and is refused; a lone candidate passes.
+    int16_t min_margin_q15 = 1638;
+    uint32_t min_variance = kNccMinVariance;  // flat patches never match (see above)
+};
+
+struct FeatureMatch {
+    uint16_t prev, cur;  // indices into the two sets
+    int16_t score_q15;
+};
+
+// Each prev corner lands in exactly one of: flat, no_candidate, below_min, ambiguous,
+// not_mutual, dropped_capacity, or the output.
+struct MatchStats {
+    uint32_t scored = 0;  // pairs whose NCC was computed (both non-flat, within the window)
+    uint16_t flat = 0, no_candidate = 0, below_min = 0, ambiguous = 0, not_mutual = 0,
+             dropped_capacity = 0;
+};
+
+namespace detail {
+struct PatchSums {
+    uint32_t sum, sum_sq;
+    bool flat;
+};
+template <int R>
+PatchSums patch_sums(const Feature<R>& f, uint32_t min_variance) {
+    uint32_t s = 0, ss = 0;  // <= 225·255 and 225·255²
+    for (int i = 0; i < Feature<R>::kSide * Feature<R>::kSide; ++i) {
+        s += f.patch[i];
+        ss += uint32_t{f.patch[i]} * f.patch[i];
+    }
+    return {s, ss, ncc_flat(Feature<R>::kSide * Feature<R>::kSide, s, ss, min_variance)};
+}
+template <int R>
+uint32_t patch_dot(const Feature<R>& a, const Feature<R>& b) {
+    uint32_t d = 0;
+    for (int i = 0; i < Feature<R>::kSide * Feature<R>::kSide; ++i) d += uint32_t{a.patch[i]} * b.patch[i];
+    return d;
+}
+}  // namespace detail
+
+// Matches prev's corners to cur's by the NCC of their patches: for each prev corner, the best
+// non-flat cur corner within the search window (first index on ties), kept when its score
+// >= min_score, beats the second best by min_margin and, if mutual, prev is also that cur
+// corner's best (first index on ties) among the prev corners whose window holds it. Work:
+// one patch dot product per pair in the window, |prev|·|cur| at most; stack: about
+// 22·N1 + 18·N2 bytes (4 KB at 96 + 96). Output in prev order, up to `capacity`; returns the number written.
+template <int R, uint16_t N1, uint16_t N2>
+uint16_t match_features(const FeatureSet<R, N1>& prev, const FeatureSet<R, N2>& cur,
+                        const MatchConfig& config, FeatureMatch* out, uint16_t capacity,
+                        MatchStats* stats = nullptr) {
+    constexpr uint32_t kN = Feature<R>::kSide * Feature<R>::kSide;
+    constexpr uint16_t kNone = 0xFFFF;
+    constexpr int32_t kNoScore = INT32_MIN;  // below every Q15 score
+    static_assert(kN <= kNccMaxPixels, "patches within the NCC bound");
+    static_assert(N1 < kNone && N2 < kNone, "indices fit uint16_t with a spare value");
+    MatchStats st;
+    const uint16_t n1 = prev.count <= N1 ? prev.count : N1;
+    const uint16_t n2 = cur.count <= N2 ? cur.count : N2;
+    detail::PatchSums ps[N1], cs[N2];
+    uint16_t best_cur[N1], best_prev[N2];
+    int32_t best_score[N1], second_score[N1], best_score_cur[N2];  // kNoScore: none yet
+    for (uint16_t j = 0; j < n2; ++j) {
+        cs[j] = detail::patch_sums(cur.items[j], config.min_variance);
+        best_prev[j] = kNone;
+        best_score_cur[j] = kNoScore;
+    }
+    const int32_t radius = config.search_radius_px;
+    for (uint16_t i = 0; i < n1; ++i) {
+        ps[i] = detail::patch_sums(prev.items[i], config.min_variance);
+        best_cur[i] = kNone;
+        best_score[i] = second_score[i] = kNoScore;
+        if (ps[i].flat) continue;
+        const int32_t ex = prev.items[i].px + config.offset_x, ey = prev.items[i].py + config.offset_y;
+        for (uint16_t j = 0; j < n2; ++j) {
+            const int32_t dx = cur.items[j].px - ex, dy = cur.items[j].py - ey;
+            if (cs[j].flat || dx < -radius || dx > radius || dy < -radius || dy > radius) continue;
+            NccSums s;
+            s.n = kN;
+            s.sa = ps[i].sum;
+            s.saa = ps[i].sum_sq;
+            s.sb = cs[j].sum;
+            s.sbb = cs[j].sum_sq;
+            s.sab = detail::patch_dot(prev.items[i], cur.items[j]);
+            const int16_t q = ncc_from_sums(s, config.min_variance).q15;
+            ++st.scored;
+            if (q > best_score[i]) {
+                second_score[i] = best_score[i];
+                best_score[i] = q;
+                best_cur[i] = j;
+            } else if (q > second_score[i]) {
+                second_score[i] = q;
+            }
+            if (q > best_score_cur[j]) {
+                best_score_cur[j] = q;
+                best_prev[j] = i;
+            }
+        }
+    }
+    uint16_t written = 0;
+    for (uint16_t i = 0; i < n1; ++i) {
+        const uint16_t j = best_cur[i];
+        if (ps[i].flat) {
+            ++st.flat;
+        } else if (j == kNone) {
+            ++st.no_candidate;
+        } else if (best_score[i] < config.min_score_q15) {
+            ++st.below_min;
+        } else if (second_score[i] != kNoScore &&
+                   best_score[i] - second_score[i] < config.min_margin_q15) {
+            ++st.ambiguous;
+        } else if (config.mutual && best_prev[j] != i) {
+            ++st.not_mutual;
+        } else if (written == capacity) {
+            ++st.dropped_capacity;
+        } else {
+            out[written++] = FeatureMatch{i, j, static_cast<int16_t>(best_score[i])};
+        }
+    }
+    if (stats) *stats = st;
+    return written;
+}
+
+}  // namespace qt

@@ -1,0 +1,203 @@
+#include "tracking/quad_tracker.h"
+
+namespace qt {
+
+namespace {
+
+// Angle between two lines' orientations, modulo 180°: [0°, 90°] as a binary angle.
+angle_t orientation_diff(angle_t a, angle_t b) {
+    const angle_t d = (a - b) & (kAngleHalfTurn - 1u);
+    return d > kAngleQuarterTurn ? kAngleHalfTurn - d : d;
+}
+
+// The contrast polarities of two lines agree (either unknown passes). bright_side is relative
+// to each line's own normal, so it flips when the normals point opposite ways.
+bool same_polarity(const Segment& a, const Segment& b) {
+    if (a.bright_side == 0 || b.bright_side == 0) return true;
+    const angle_t d = a.theta - b.theta;
+    const bool opposite = d > kAngleQuarterTurn && d < 3u * kAngleQuarterTurn;
+    return opposite ? a.bright_side == -b.bright_side : a.bright_side == b.bright_side;
+}
+
+// Corners of the quadrangle whose side i lies on sides[i]: corner i = sides[i − 1] × sides[i].
+// True when all four exist and make a strictly convex quadrangle, anti-clockwise as seen (the
+// winding a track starts with: a flip means the lines crossed over), sides within the limits.
+bool corners_of(const Segment sides[4], const QuadParams& shape, Point16 corners[4]) {
+    for (int i = 0; i < 4; ++i)
+        if (!intersect_lines(sides[(i + 3) % 4], sides[i], corners[i])) return false;
+    if (!is_convex(corners) || shoelace2(corners) >= 0) return false;
+    q16_16 lengths[4];
+    for (int i = 0; i < 4; ++i) lengths[i] = distance(corners[i], corners[(i + 1) % 4]);
+    return rule_side_lengths(lengths, shape);
+}
+
+// Side i as the segment from corner i to corner i + 1 on its line.
+Segment side_segment(const Segment& line, Point16 a, Point16 b) {
+    Segment s = line;
+    s.x1 = a.x;
+    s.y1 = a.y;
+    s.x2 = b.x;
+    s.y2 = b.y;
+    return s;
+}
+
+// Fills out's corners, sides and detected bits from the tracker's side order, turned so that
+// corner 0 has the smallest x + y (detect's contract).
+void emit(const Segment lines[4], const Point16 corners[4], uint8_t detected, TrackedQuad& out) {
+    int first = 0;
+    for (int i = 1; i < 4; ++i) {
+        const int64_t s = static_cast<int64_t>(corners[i].x.raw) + corners[i].y.raw;
+        const int64_t f = static_cast<int64_t>(corners[first].x.raw) + corners[first].y.raw;
+        if (s < f) first = i;
+    }
+    out.detected = 0;
+    for (int i = 0; i < 4; ++i) {
+        const int k = (first + i) % 4;
+        out.corners[i] = corners[k];
+        out.sides[i] = side_segment(lines[k], corners[k], corners[(k + 1) % 4]);
+        if (detected & (1u << k)) out.detected = static_cast<uint8_t>(out.detected | (1u << i));
+    }
+}
+
+}  // namespace
+
+bool QuadTracker::agrees(const TrackedQuad& tracked, const Quad& detected) const {
+    // Both in detect's corner order; a detection whose corner 0 is another corner (two corners
+    // with almost the same x + y) counts as disagreeing, and restarting from it costs nothing.
+    const int64_t gate = params_.gate_distance.raw;
+    for (int i = 0; i < 4; ++i)
+        if (distance(tracked.corners[i], detected.corners[i]).raw > gate) return false;
+    return true;
+}
+
+const char* quad_track_lost_name(uint8_t reason) {
+    switch (reason) {
+        case lost_side_unseen: return "side_unseen";
+        case lost_shape: return "shape";
+        case lost_saturated: return "saturated";
+        case lost_detection_disagrees: return "detection_disagrees";
+        default: return nullptr;
+    }
+}
+
+const char* track_state_name(TrackState state) {
+    switch (state) {
+        case TrackState::started: return "started";
+        case TrackState::tracking: return "tracking";
+        case TrackState::none: break;
+    }
+    return "none";
+}
+
+QuadTrackerParams default_quad_tracker_params(uint16_t width, uint16_t height) {
+    QuadTrackerParams p;
+    p.lines = default_line_tracker_params(width, height);
+    p.shape = sized_quad_params(p.shape, height);
+    return p;
+}
+
+void QuadTracker::reset() {
+    active_ = false;
+    age_ = 0;
+    for (uint8_t& m : missed_) m = 0;
+    stats_ = QuadTrackStats{};
+}
+
+TrackedQuad QuadTracker::start(const Segment* lines, const Quad& quad) {
+    Segment sides[4];
+    for (int i = 0; i < 4; ++i) {
+        sides[i] = lines[quad.lines[i]];
+        sides_[i].init(sides[i], params_.lines);
+        missed_[i] = 0;
+    }
+    active_ = true;
+    age_ = 0;
+    ++track_id_;
+    TrackedQuad out;
+    out.state = TrackState::started;
+    out.track_id = track_id_;
+    emit(sides, quad.corners, 0x0F, out);
+    return out;
+}
+
+TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quads,
+                              uint16_t quad_count) {
+    stats_ = QuadTrackStats{};
+    if (active_) {
+        Segment predicted[4];
+        for (int i = 0; i < 4; ++i) {
+            sides_[i].predict();
+            predicted[i] = sides_[i].line();
+        }
+        Point16 corners[4];
+        uint8_t detected = 0;
+        uint8_t lost = 0;
+        if (!corners_of(predicted, params_.shape, corners)) {
+            lost = lost_shape;
+        } else {
+            // Association: each side takes the longest gated line; a line serves one side. A
+            // frame without lines leaves every side unmatched (and counted in missed_).
+            uint32_t used[8] = {};  // bit set of line indices < 256
+            for (int i = 0; i < 4; ++i) {
+                const SinCos normal = sin_cos(predicted[i].theta);
+                const Point16 a = corners[i], b = corners[(i + 1) % 4];
+                int best = -1;
+                q16_16 best_len{0};
+                for (uint16_t j = 0; j < n && j < 256; ++j) {
+                    if (used[j / 32] & (1u << (j % 32))) continue;
+                    const Segment& s = lines[j];
+                    if (orientation_diff(s.theta, predicted[i].theta) > params_.gate_angle) continue;
+                    const int64_t gate = params_.gate_distance.raw;
+                    if (abs64(signed_distance(predicted[i], normal, s.x1.raw, s.y1.raw)) > gate ||
+                        abs64(signed_distance(predicted[i], normal, s.x2.raw, s.y2.raw)) > gate)
+                        continue;
+                    if (!same_polarity(s, predicted[i])) continue;
+                    if (side_overlap(a, b, s).raw <= 0) continue;
+                    const q16_16 len = distance(Point16{s.x1, s.y1}, Point16{s.x2, s.y2});
+                    if (best < 0 || len.raw > best_len.raw) {
+                        best = j;
+                        best_len = len;
+                    }
+                }
+                if (best >= 0) {
+                    used[best / 32] |= 1u << (best % 32);
+                    sides_[i].update(lines[best]);
+                    detected = static_cast<uint8_t>(detected | (1u << i));
+                    missed_[i] = 0;
+                } else if (missed_[i] < 255) {
+                    ++missed_[i];
+                }
+            }
+            Segment current[4];
+            for (int i = 0; i < 4; ++i) {
+                current[i] = sides_[i].line();
+                if (missed_[i] > params_.max_predicted) lost = lost_side_unseen;
+                if (sides_[i].flags() != 0) lost = lost_saturated;
+            }
+            if (lost == 0 && !corners_of(current, params_.shape, corners)) lost = lost_shape;
+            if (lost == 0) {
+                TrackedQuad out;
+                out.state = TrackState::tracking;
+                out.track_id = track_id_;
+                out.age = age_ + 1;
+                emit(current, corners, detected, out);
+                // No side found near its prediction while the detector sees a whole quadrangle
+                // elsewhere: the board moved past the gate; trust the detection. With some
+                // sides matched the track is anchored, and a disagreeing detection is more
+                // likely those sides plus an occluder's edges (the demo's bars) than the board.
+                if (detected != 0 || quad_count == 0 || agrees(out, quads[0])) {
+                    ++age_;
+                    return out;
+                }
+                lost = lost_detection_disagrees;
+            }
+        }
+        // Lost: start again from this frame's detection, if there is one.
+        stats_.lost_reason = lost;
+        active_ = false;
+    }
+    if (quad_count > 0 && n > 0) return start(lines, quads[0]);
+    return TrackedQuad{};
+}
+
+}  // namespace qt

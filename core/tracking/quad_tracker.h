@@ -1,0 +1,121 @@
+// The quadrangle tracker: quadrangle-3kf §2 "Real-time Quadrangle Tracking" and Experiment 3.
+// Four line trackers (line_tracker.h), one per side, carry a board found by detect_quads()
+// from frame to frame; a side the lines stage misses in a frame (the paper's frames 41–43,
+// where the top and bottom sides are not extracted) is predicted, and the quadrangle is still
+// rebuilt from the four lines.
+//
+// Each frame (step()):
+//   1. No track: the best detected quadrangle, if any, starts one (every side "detected").
+//   2. Track: each side's tracker predicts; each side takes the detected line that passes the
+//      gate — orientation within gate_angle of the predicted side (modulo 180°), both ends
+//      within gate_distance px of the predicted line, the same contrast polarity when both
+//      are known, and overlapping the predicted side's extent — choosing the longest such line;
+//      a line serves one side at most. Matched sides are updated ("detected"), the others keep
+//      their prediction ("predicted"). The corners are the crossings of consecutive sides.
+//   3. The track is LOST, and step() restarts from 1 in the same frame, when any side has gone
+//      unmatched for more than max_predicted frames in a row, when the four sides no longer
+//      make a convex quadrangle whose sides are within QuadParams' side lengths, when a
+//      filter saturated, or when no side matched while this frame's best detected quadrangle
+//      has a corner more than gate_distance from the tracked one (the board moved faster than
+//      the gate). A stated rule rather than a confidence: it bounds how long the output can be
+//      pure extrapolation, max_predicted frames. With some sides matched a disagreeing
+//      detection is not trusted: it is too often the matched sides plus an occluder's edges.
+//      The price: a predicted side that has drifted more than the gate from its line is not
+//      picked up again until the track is lost (the paper's constant-velocity model on a
+//      board turning 2.5°/frame, see the demo).
+//
+// Output corners follow detect's contract: anti-clockwise as seen, corner 0 with the smallest
+// x + y, side i from corner i to corner i + 1; the per-side flags follow the same order.
+#pragma once
+#include <stdint.h>
+
+#include "tracking/line_tracker.h"
+#include "quads/quad_detector.h"
+#include "quads/quad_rules.h"
+#include "lines/segment.h"
+
+namespace qt {
+
+struct QuadTrackerParams {
+    LineTrackerParams lines;  // per side; default_line_tracker_params(width, height)
+    // Gate: largest angle between a detected line and the predicted side, degrees.
+    angle_t gate_angle = angle_from_deg(8);
+    // Gate: largest distance of a detected line's end points from the predicted side, px.
+    // 12 px holds a board moving ~10 px/frame on the frame after the track starts, when the
+    // filters do not know its velocity yet.
+    q16_16 gate_distance = q16_16::from_int(12);
+    // A side may be predicted this many frames in a row before the track is dropped.
+    uint8_t max_predicted = 15;
+    // Shape limits of the rebuilt quadrangle (side lengths; the other rules are detection's).
+    QuadParams shape;
+};
+
+// QuadTrackerParams for a width × height frame with default_line_tracker_params().
+QuadTrackerParams default_quad_tracker_params(uint16_t width, uint16_t height);
+
+enum class TrackState : uint8_t {
+    none,      // no quadrangle this frame
+    started,   // a new track from this frame's detection
+    tracking,  // carried by the trackers (see TrackedQuad::detected for which sides were seen)
+};
+
+// "none", "started" or "tracking": the name the JSON and the result text use.
+const char* track_state_name(TrackState state);
+
+struct TrackedQuad {
+    TrackState state = TrackState::none;
+    Point16 corners[4] = {};  // px, detect's order (see the top of the file)
+    Segment sides[4] = {};    // side i's line (corner i -> i + 1): measured or predicted
+    uint8_t detected = 0;     // bit i: side i was matched to a detected line this frame
+    uint32_t track_id = 0;    // 1, 2, ...: a new id every time a track starts
+    uint32_t age = 0;         // frames since the track started (0 on the start frame)
+};
+
+// What the last step() did, for tuning and for the JSON.
+struct QuadTrackStats {
+    uint8_t lost_reason = 0;  // QuadTrackLost of the track that ended this frame, 0 if none
+};
+
+enum QuadTrackLost : uint8_t {
+    lost_side_unseen = 1,  // a side predicted for more than max_predicted frames
+    lost_shape = 2,        // no convex quadrangle with sides in range
+    lost_saturated = 3,    // a filter saturated
+    lost_detection_disagrees = 4,  // no side matched, and the detection is elsewhere
+};
+
+// The JSON name of a QuadTrackLost reason ("side_unseen", "shape", "saturated",
+// "detection_disagrees"), or nullptr for 0 (no track lost) and unknown values.
+const char* quad_track_lost_name(uint8_t reason);
+
+class QuadTracker {
+public:
+    // QuadTrackerParams{} has no frame size, so its filter origins all sit at (0, 0): pass
+    // default_quad_tracker_params(width, height) here or to set_params() before the first step.
+    explicit QuadTracker(const QuadTrackerParams& params = QuadTrackerParams{}) : params_(params) {}
+    void set_params(const QuadTrackerParams& params) { params_ = params; reset(); }
+    void reset();
+
+    // One frame: lines[0 .. n) from the lines stage and quads[0 .. quad_count) from
+    // detect_quads() on those lines (best first; Quad::lines index into `lines`).
+    TrackedQuad step(const Segment* lines, uint16_t n, const Quad* quads, uint16_t quad_count);
+
+    const QuadTrackStats& stats() const { return stats_; }
+    bool tracking() const { return active_; }
+    // Side i's line tracker, in the order of the quadrangle the track started from (read-only,
+    // for checking the filters' covariances).
+    const LineTracker& side(int i) const { return sides_[i]; }
+
+private:
+    TrackedQuad start(const Segment* lines, const Quad& quad);
+    bool agrees(const TrackedQuad& tracked, const Quad& detected) const;
+
+    QuadTrackerParams params_;
+    LineTracker sides_[4];
+    uint8_t missed_[4] = {0, 0, 0, 0};  // frames in a row each side went unmatched
+    bool active_ = false;
+    uint32_t track_id_ = 0;
+    uint32_t age_ = 0;
+    QuadTrackStats stats_;
+};
+
+}  // namespace qt

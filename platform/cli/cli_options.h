@@ -1,0 +1,50 @@
+// The detection and tracking parameters as command-line flags: one table gives each flag its
+// parameter, unit, range and help line, so parsing and --help cannot disagree. Names follow the
+// papers. `quadtrack detect` takes the detection flags, `quadtrack track` those and the
+// tracker's.
+#pragma once
+#include <stdint.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "quads/board_detector.h"
+#include "tracking/line_tracker.h"
+
+namespace qt::cli {
+
+// The command a flag belongs to: detect's flags apply to track too.
+enum class Command { detect, track };
+
+// The QuadTrackerParams a user sets (the rest follows the frame size, see run_track).
+struct TrackOptions {
+    LineModel model = LineModel::closest_points;
+    uint8_t filters = 3;       // closest_points filters, 1..3
+    angle_t gate_angle = 0;    // defaults from QuadTrackerParams (see the constructor)
+    q16_16 gate_distance = {};
+    uint8_t max_predicted = 0;
+
+    TrackOptions();
+};
+
+struct DetectOptions {
+    BoardParams params;
+    uint16_t display_width = 1024, display_height = 768;  // display pixels (rule 5, homography)
+    uint16_t max_quads = 4;                                // quadrangles reported, 1..4
+    TrackOptions track;                                    // track only
+
+    DetectOptions();  // params.quads.display_aspect follows the display size
+};
+
+// The help lines of every flag of `command`: "  --name VALUE   text (unit, range; default d)".
+std::string options_help(Command command = Command::detect);
+
+// Parses a command's arguments (everything after its name): flags of `command` as --name VALUE
+// or --name=VALUE, and exactly one positional argument (detect's IMAGE, track's SEQUENCE) into
+// `positional`. Returns -1 when the command should run; otherwise the exit status after
+// printing: 0 after `usage` on `out` for --help/-h, 2 after one error line on `err`.
+int parse_command_line(const std::vector<std::string>& args, Command command, const std::string& usage,
+                       DetectOptions& options, std::string& positional, std::FILE* out, std::FILE* err);
+
+}  // namespace qt::cli

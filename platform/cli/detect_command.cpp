@@ -1,0 +1,55 @@
+#include "cli/detect_command.h"
+
+#include "cli/board_runner.h"
+#include "cli/cli_options.h"
+#include "cli/detect_json.h"
+#include "io/error_line.h"
+#include "io/image_io.h"
+
+namespace qt::cli {
+
+std::string detect_usage() {
+    return "usage: quadtrack detect IMAGE [OPTIONS]\n"
+           "  IMAGE is a PGM (P5), PPM (P6, converted to grey) or Y4M file (first frame's Y plane),\n"
+           "  at most " + std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
+           " pixels. Prints one JSON object on stdout (see README, \"quadtrack detect\").\n"
+           "options (--name VALUE or --name=VALUE):\n" + options_help();
+}
+
+bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, DetectResult& result,
+                  std::string& error) {
+    if (frame.width > kMaxFrameWidth || frame.height > kMaxFrameHeight) {
+        error = std::to_string(frame.width) + " x " + std::to_string(frame.height) +
+                " is over this build's capacity of " + std::to_string(kMaxFrameWidth) + " x " +
+                std::to_string(kMaxFrameHeight);
+        return false;
+    }
+    if (!detect_board(frame, options.params, result)) {
+        error = status_name(result.status);
+        return false;
+    }
+    if (result.quads.size() > options.max_quads) result.quads.resize(options.max_quads);
+    return true;
+}
+
+int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
+    DetectOptions options;
+    std::string path, error;
+    const int parsed = parse_command_line(args, Command::detect, detect_usage(), options, path, out, err);
+    if (parsed >= 0) return parsed;
+
+    io::GreyImage frame;
+    if (!io::read_image(path, frame, error)) {
+        qt::io::print_error_line(err, "quadtrack detect: %s", error.c_str());
+        return 1;
+    }
+    DetectResult result;
+    if (!detect_frame(frame, options, result, error)) {
+        qt::io::print_error_line(err, "quadtrack detect: %s: %s", path.c_str(), error.c_str());
+        return 1;
+    }
+    std::fprintf(out, "%s\n", detect_json(result, options.display_width, options.display_height).c_str());
+    return 0;
+}
+
+}  // namespace qt::cli

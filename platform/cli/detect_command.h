@@ -1,0 +1,25 @@
+// `quadtrack detect IMAGE [OPTIONS]`: one frame in, its lines and quadrangles as JSON out.
+#pragma once
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/board_runner.h"
+#include "cli/cli_options.h"
+
+namespace qt::cli {
+
+// One frame through the detection chain as detect and track both run it: refuses frames over
+// the build's capacity, keeps the best options.max_quads quadrangles. On failure returns false
+// with a one-line reason (no command prefix) in `error`.
+bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, DetectResult& result,
+                  std::string& error);
+
+// args: everything after "detect". Writes the JSON (one line) to `out`, one error line to
+// `err`. Returns the exit status: 0 ok, 1 bad input file or frame, 2 bad command line.
+int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* err);
+
+// The usage text of detect, with every option.
+std::string detect_usage();
+
+}  // namespace qt::cli

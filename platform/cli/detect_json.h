@@ -1,0 +1,38 @@
+// The one definition of `quadtrack detect`'s JSON (see README, "quadtrack detect"), written on
+// one line so a sequence of frames is JSON Lines:
+//   {"width":W,"height":H,"status":"ok",
+//    "lines":[{"x1":..,"y1":..,"x2":..,"y2":..,"rho":..,"theta_deg":..}, ...],
+//    "quads":[{"corners":[[x,y],[x,y],[x,y],[x,y]],"score":..,
+//              "display_homography":[[a,b,c],[d,e,f],[g,h,1]]}, ...]}
+// Pixels with the origin at the centre of pixel (0, 0), x right, y down; rho >= 0 and
+// theta_deg in [0, 360) the direction of the line's normal from the origin (y down: clockwise
+// on screen); corners anti-clockwise as seen, the first with the smallest x + y (top-left);
+// score = covered share of the perimeter, 0..1; display_homography maps display pixels
+// (u, v, 1) onto image pixels (x·w, y·w, w), or is null when it cannot be represented.
+//
+// `quadtrack track` writes one line per frame with the same pieces (README, "quadtrack track"):
+//   {"frame":K,"width":W,"height":H,"status":"ok","state":"none"|"started"|"tracking",
+//    "track_id":N,
+//    "quad":{"corners":[[x,y],[x,y],[x,y],[x,y]],"source":["detected"|"predicted", x4],
+//            "display_homography":[[..],[..],[..]]}|null,
+//    "lost":null|"side_unseen"|"shape"|"saturated"|"detection_disagrees",
+//    "lines":[...as detect...]}
+// frame counts from 0 in the sequence's order; track_id is 1, 2, ... (a new one each time a track
+// starts), 0 when state is "none" (then quad is null); source[i] tells whether side i (corner i
+// -> corner i + 1) was matched to a line detected in this frame or predicted by its tracker;
+// lost names why a track ended in this frame (a new one may have started in the same frame).
+#pragma once
+#include <string>
+
+#include "cli/board_runner.h"
+#include "tracking/quad_tracker.h"
+
+namespace qt::cli {
+
+std::string detect_json(const DetectResult& result, uint16_t display_width, uint16_t display_height);
+
+// lost_reason: QuadTracker::stats().lost_reason (a QuadTrackLost, 0 for none).
+std::string track_json(int frame, const DetectResult& result, const TrackedQuad& quad, uint8_t lost_reason,
+                       uint16_t display_width, uint16_t display_height);
+
+}  // namespace qt::cli

@@ -1,0 +1,40 @@
+// The flags of `quadtrack target` and `quadtrack homography`: one table gives each flag its
+// parameter, unit, range and help line, so parsing and --help cannot disagree. Names follow
+// filtering-geometry.txt (Q, R, the NDS and reprojection gates, the reset).
+#pragma once
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "target/float/target_pipeline.h"
+
+namespace qt::cli {
+
+// The CLI's pipeline: frames up to 640 × 480, 160 corners a frame, templates up to 24 × 24 px,
+// search windows up to 48 px around the expected position.
+using CliTargetPipeline = TargetPipeline<640, 160, 4, 24, 160>;
+
+enum class GeometryCommand { homography, target };
+
+struct TargetOptions {
+    TargetPipelineConfig config;  // defaults: default_target_config()
+    bool roi_set = false;         // target: --roi is required
+    int roi_x = 0, roi_y = 0, roi_w = 0, roi_h = 0;  // px, frame 0
+    TargetOptions();
+};
+
+// The pipeline's defaults for the CLI (HarrisConfig for VGA-sized frames, the paper's Q).
+TargetPipelineConfig default_target_config();
+
+// The help lines of every flag of `command`: "  --name VALUE   text (unit, range; default d)".
+std::string target_options_help(GeometryCommand command);
+
+// Parses a command's arguments into `options` and its positional arguments (target: exactly
+// one SEQUENCE; homography: exactly two images A B). Returns -1 when the command should run;
+// otherwise the exit status after printing: 0 after `usage` on `out` for --help/-h, 2 after
+// one error line on `err`.
+int parse_target_command_line(const std::vector<std::string>& args, GeometryCommand command,
+                              const std::string& usage, TargetOptions& options,
+                              std::vector<std::string>& positional, std::FILE* out, std::FILE* err);
+
+}  // namespace qt::cli

@@ -1,0 +1,66 @@
+#include "cli/track_command.h"
+
+#include "cli/detect_command.h"
+#include "cli/detect_json.h"
+#include "io/error_line.h"
+#include "cli/frame_loop.h"
+#include "tracking/quad_tracker.h"
+
+namespace qt::cli {
+
+std::string track_usage() {
+    return "usage: quadtrack track SEQUENCE [OPTIONS]\n"
+           "  SEQUENCE is a Y4M file (every frame's Y plane), a printf pattern of PGM/PPM files\n"
+           "  (frames/f%03d.pgm: numbered from 0, or 1, to the first missing number) or one\n"
+           "  PGM/PPM file; every frame the same size, at most " + std::to_string(kMaxFrameWidth) + " x " +
+           std::to_string(kMaxFrameHeight) + " pixels.\n"
+           "  Each frame is detected as by quadtrack detect, then the quadrangle tracker carries the\n"
+           "  board: one JSON line per frame on stdout (see README, \"quadtrack track\").\n"
+           "options (--name VALUE or --name=VALUE):\n" + options_help(Command::track);
+}
+
+namespace {
+
+// The tracker's parameters for a width × height frame: the size-dependent defaults, then the
+// command line's choices, with the detection's shape limits.
+QuadTrackerParams tracker_params(const DetectOptions& o, uint16_t width, uint16_t height) {
+    QuadTrackerParams p = default_quad_tracker_params(width, height);
+    p.lines.model = o.track.model;
+    p.lines.filters = o.track.filters;
+    p.gate_angle = o.track.gate_angle;
+    p.gate_distance = o.track.gate_distance;
+    p.max_predicted = o.track.max_predicted;
+    p.shape = sized_quad_params(o.params.quads, height);
+    return p;
+}
+
+}  // namespace
+
+int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
+    DetectOptions options;
+    std::string spec;
+    const int parsed = parse_command_line(args, Command::track, track_usage(), options, spec, out, err);
+    if (parsed >= 0) return parsed;
+
+    QuadTracker tracker;
+    return for_each_frame(spec, "track", err, [&](int k, const io::GreyImage& frame) {
+        if (k == 0)
+            tracker.set_params(tracker_params(options, static_cast<uint16_t>(frame.width),
+                                              static_cast<uint16_t>(frame.height)));
+        DetectResult result;
+        std::string error;
+        if (!detect_frame(frame, options, result, error)) {
+            qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", spec.c_str(), k, error.c_str());
+            return 1;
+        }
+        const TrackedQuad t = tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
+                                           result.quads.data(), static_cast<uint16_t>(result.quads.size()));
+        const std::string line = track_json(k, result, t, tracker.stats().lost_reason, options.display_width,
+                                            options.display_height);
+        std::fprintf(out, "%s\n", line.c_str());
+        std::fflush(out);
+        return 0;
+    });
+}
+
+}  // namespace qt::cli

@@ -1,0 +1,127 @@
+#include "demo/demo_sequence.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "cli/board_runner.h"
+#include "scene/board_sequence.h"
+#include "io/overlay.h"
+#include "io/png_writer.h"
+#include "tracking/quad_tracker.h"
+
+namespace qt::cli {
+
+namespace {
+
+double px(q16_16 v) { return v.raw / 65536.0; }
+
+// A 2 px wide line from a to b; dashed: 8 px on, 6 px off.
+void side_line(io::RgbImage& pic, Point16 a, Point16 b, io::Rgb colour, bool dashed) {
+    const double x1 = px(a.x), y1 = px(a.y), x2 = px(b.x), y2 = px(b.y);
+    const double len = std::hypot(x2 - x1, y2 - y1);
+    if (len < 1) return;
+    const double ux = (x2 - x1) / len, uy = (y2 - y1) / len;
+    const double on = dashed ? 8 : len, period = dashed ? 14 : len + 1;
+    for (double t = 0; t < len; t += period) {
+        const double e = std::fmin(t + on, len);
+        for (double o : {-0.5, 0.5})
+            pic.line(x1 + ux * t - uy * o, y1 + uy * t + ux * o, x1 + ux * e - uy * o, y1 + uy * e + ux * o, colour);
+    }
+}
+
+// The worst distance of corners 0..3 from the truth TL, TR, BR, BL (corners 0, 3, 2, 1 in
+// detect's anti-clockwise order), px.
+double worst_corner_error(const TrackedQuad& t, const scene::BoardScene& sc) {
+    double worst = 0;
+    const int truth_of[4] = {0, 3, 2, 1};
+    for (int i = 0; i < 4; ++i) {
+        const auto& c = sc.corners[truth_of[i]];
+        worst = std::fmax(worst, std::hypot(px(t.corners[i].x) - c.x / 256.0, px(t.corners[i].y) - c.y / 256.0));
+    }
+    return worst;
+}
+
+// "D P D P": side i detected or predicted.
+void side_letters(const TrackedQuad& t, char (&text)[8]) {
+    for (int i = 0; i < 4; ++i) {
+        text[2 * i] = (t.detected >> i) & 1 ? 'D' : 'P';
+        text[2 * i + 1] = i < 3 ? ' ' : '\0';
+    }
+}
+
+}  // namespace
+
+bool run_demo_sequence(const std::string& out_dir) {
+    std::printf("board sequence: %d frames 640x480, the board turning 2.5 deg and moving 6.3 px a frame; in frames "
+                "%d-%d dark bars hide its top and bottom sides.\n"
+                "  tracked with the turn model (quadtrack track --model turn) and, for comparison, the paper's 3KF "
+                "(the default); pictures and sides are the turn model's\n"
+                "  pictures: lines (red), detected sides (solid green), predicted sides (dashed orange), corners "
+                "(yellow rings, the first cyan), the truth's corners (magenta dots)\n"
+                "  sides: D detected, P predicted, in corner order (left, bottom, right, top)\n",
+                scene::kBoardSequenceFrames, scene::kFirstHiddenFrame, scene::kLastHiddenFrame);
+    const BoardParams params;
+    QuadTrackerParams tp = default_quad_tracker_params(640, 480);
+    tp.shape = params.quads;
+    QuadTracker paper(tp);
+    tp.lines.model = LineModel::turn;
+    QuadTracker turn(tp);
+    for (int f = 0; f < scene::kBoardSequenceFrames; ++f) {
+        const scene::BoardSequenceFrame d = scene::board_sequence_frame(f);
+        const scene::BoardScene& sc = d.scene;
+        DetectResult r;
+        if (!detect_board(d.image, params, r)) {
+            std::fprintf(stderr, "quadtrack demo: frame %d: %s\n", f, status_name(r.status));
+            return false;
+        }
+        const uint16_t n = static_cast<uint16_t>(r.lines.size()), nq = static_cast<uint16_t>(r.quads.size());
+        const TrackedQuad t = turn.step(r.lines.data(), n, r.quads.data(), nq);
+        const TrackedQuad p = paper.step(r.lines.data(), n, r.quads.data(), nq);
+        io::RgbImage pic = io::RgbImage::from_grey(d.image, 60);
+        for (const Segment& l : r.lines) pic.line(px(l.x1), px(l.y1), px(l.x2), px(l.y2), {255, 50, 50});
+        // The truth, as the scene generator placed it: in its order TL, TR, BR, BL.
+        for (const auto& c : sc.corners) pic.ring(c.x / 256.0, c.y / 256.0, 1, {255, 0, 255});
+        char name[32];
+        std::snprintf(name, sizeof name, "board_%02d.png", f);
+        std::printf("frame %2d: %2zu lines%s, ", f, r.lines.size(), d.hidden ? ", bars over top+bottom" : "");
+        if (t.state == TrackState::none) {
+            std::printf("no quadrangle");
+        } else {
+            for (int i = 0; i < 4; ++i) {
+                const bool detected = (t.detected >> i) & 1;
+                side_line(pic, t.corners[i], t.corners[(i + 1) & 3], detected ? io::Rgb{60, 255, 60} : io::Rgb{255, 140, 0},
+                          !detected);
+            }
+            for (int i = 0; i < 4; ++i) {
+                const io::Rgb colour = i == 0 ? io::Rgb{0, 230, 255} : io::Rgb{255, 230, 0};
+                pic.ring(px(t.corners[i].x), px(t.corners[i].y), 4, colour);
+                pic.ring(px(t.corners[i].x), px(t.corners[i].y), 5, colour);
+            }
+            char sides[8];
+            side_letters(t, sides);
+            std::printf("quad (%s, sides %s) track %u, corners (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f), "
+                        "worst corner error %.2f px",
+                        track_state_name(t.state), sides, t.track_id, px(t.corners[0].x), px(t.corners[0].y),
+                        px(t.corners[1].x), px(t.corners[1].y), px(t.corners[2].x), px(t.corners[2].y),
+                        px(t.corners[3].x), px(t.corners[3].y), worst_corner_error(t, sc));
+        }
+        if (turn.stats().lost_reason != 0) std::printf(", a track was lost: %s", quad_track_lost_name(turn.stats().lost_reason));
+        if (p.state == TrackState::none) {
+            std::printf("; 3KF: none");
+        } else {
+            char sides[8];
+            side_letters(p, sides);
+            std::printf("; 3KF: sides %s, %.2f px", sides, worst_corner_error(p, sc));
+        }
+        if (paper.stats().lost_reason != 0) std::printf(", lost: %s", quad_track_lost_name(paper.stats().lost_reason));
+        std::printf(" -> %s\n", name);
+        std::string error;
+        if (!io::write_png(out_dir + "/" + name, pic.width, pic.height, 3, pic.pixels, error)) {
+            std::fprintf(stderr, "quadtrack demo: %s\n", error.c_str());
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace qt::cli

@@ -1,0 +1,56 @@
+#include "scene/board_sequence.h"
+
+#include <cmath>
+
+namespace qt::scene {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kBarLevel = 24;  // grey level of a bar (plus the rendered noise's low bits)
+
+}  // namespace
+
+BoardScene turned_board(const BoardScene& base, double angle_deg, double dx, double dy) {
+    BoardScene s = base;
+    double cx = 0, cy = 0;
+    for (const auto& c : s.corners) {
+        cx += c.x / 256.0 / 4;
+        cy += c.y / 256.0 / 4;
+    }
+    const double a = angle_deg * kPi / 180, ca = std::cos(a), sa = std::sin(a);
+    for (auto& c : s.corners) {
+        const double x = c.x / 256.0 - cx, y = c.y / 256.0 - cy;
+        c.x = static_cast<int32_t>(std::lround((cx + x * ca - y * sa + dx) * 256));
+        c.y = static_cast<int32_t>(std::lround((cy + x * sa + y * ca + dy) * 256));
+    }
+    return s;
+}
+
+void draw_bar(io::GreyImage& img, SubPixel a, SubPixel b) {
+    const double ax = a.x / 256.0, ay = a.y / 256.0, dx = b.x / 256.0 - ax, dy = b.y / 256.0 - ay;
+    const double len = std::hypot(dx, dy);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x)
+            if (std::fabs((x - ax) * dy - (y - ay) * dx) / len <= kBarHalfWidth)
+                img.at(x, y) = static_cast<uint8_t>(kBarLevel + (img.at(x, y) & 7));
+}
+
+BoardSequenceFrame board_sequence_frame(int f, int shrink) {
+    BoardScene base = default_board_scene();
+    base.width /= shrink;
+    base.height /= shrink;
+    for (auto& c : base.corners) c = {c.x / shrink, c.y / shrink};
+    BoardSequenceFrame d;
+    d.scene = turned_board(base, (f - 6) * 2.5, (6.0 * f - 33) / shrink, (2.0 * f - 11) / shrink);
+    d.scene.seed = 100 + static_cast<uint64_t>(f);
+    d.image = render_board(d.scene);
+    d.hidden = f >= kFirstHiddenFrame && f <= kLastHiddenFrame;
+    if (d.hidden) {
+        draw_bar(d.image, d.scene.corners[0], d.scene.corners[1]);  // top
+        draw_bar(d.image, d.scene.corners[2], d.scene.corners[3]);  // bottom
+    }
+    return d;
+}
+
+}  // namespace qt::scene

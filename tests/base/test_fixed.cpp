@@ -1,0 +1,136 @@
+// Fixed-point helpers against double-precision references.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+
+#include "base/fixed.h"
+#include "base/prng.h"
+#include "base/wide_mul.h"
+
+using namespace qt;
+
+namespace {
+// Round half away from zero, then clamp to [lo, hi]: the reference of every narrowing here.
+int64_t ref_round_clamp(double v, int64_t lo, int64_t hi) {
+    const double r = std::round(v);  // std::round rounds halves away from zero
+    return r < static_cast<double>(lo) ? lo : r > static_cast<double>(hi) ? hi : static_cast<int64_t>(r);
+}
+}  // namespace
+
+TEST_CASE("shift-right rounding helpers match their stated rules", "[fixed]") {
+    for (int64_t v = -5000; v <= 5000; ++v)
+        for (int n = 0; n <= 6; ++n) {
+            const double exact = static_cast<double>(v) / std::ldexp(1.0, n);
+            REQUIRE(shr_round_half_up(v, n) == static_cast<int64_t>(std::floor(exact + 0.5)));
+            REQUIRE(shr_round_half_away(v, n) == static_cast<int64_t>(std::round(exact)));
+        }
+    // Symmetry of half-away, the reason to use it on signed values.
+    REQUIRE(shr_round_half_away(-3, 1) == -2);
+    REQUIRE(shr_round_half_away(3, 1) == 2);
+    REQUIRE(shr_round_half_up(-3, 1) == -1);
+}
+
+TEST_CASE("div_round_half_away for every sign combination", "[fixed]") {
+    for (int64_t n = -300; n <= 300; ++n)
+        for (int64_t d = -17; d <= 17; ++d) {
+            if (d == 0) continue;
+            REQUIRE(div_round_half_away(n, d) ==
+                    static_cast<int64_t>(std::round(static_cast<double>(n) / static_cast<double>(d))));
+        }
+}
+
+TEST_CASE("saturate clamps to the destination range", "[fixed]") {
+    REQUIRE(saturate<int16_t>(40000) == 32767);
+    REQUIRE(saturate<int16_t>(-40000) == -32768);
+    REQUIRE(saturate<int16_t>(-1234) == -1234);
+    REQUIRE(saturate<uint8_t>(-1) == 0);
+    REQUIRE(saturate<uint8_t>(256) == 255);
+    REQUIRE(saturate<int32_t>(INT64_C(1) << 40) == INT32_MAX);
+    REQUIRE(saturate<int32_t>(-(INT64_C(1) << 40)) == INT32_MIN);
+}
+
+TEST_CASE("from_ratio is the nearest representable value", "[fixed]") {
+    Pcg32 rng(1);
+    for (int i = 0; i < 200000; ++i) {
+        const int64_t num = static_cast<int64_t>(rng.next() % 200001) - 100000;
+        const int64_t den = static_cast<int64_t>(rng.next() % 1000) + 1;
+        const double exact = static_cast<double>(num) / static_cast<double>(den) * 65536.0;
+        REQUIRE(q16_16::from_ratio(num, den).raw == ref_round_clamp(exact, INT32_MIN, INT32_MAX));
+    }
+    REQUIRE(q16_16::from_ratio(1, 2).raw == 32768);
+    REQUIRE(q1_15::from_ratio(1, 1).raw == 32767);  // 1.0 saturates in q1_15
+    REQUIRE(q1_15::from_ratio(-1, 1).raw == -32768);
+    REQUIRE(q16_16::from_int(40000).raw == INT32_MAX);
+}
+
+TEST_CASE("rescale narrows with half-away rounding, widens exactly, saturates (exhaustive int16)",
+          "[fixed]") {
+    using q4_12 = Fixed<12, int16_t>;
+    using q12_4 = Fixed<4, int16_t>;
+    for (int32_t raw = -32768; raw <= 32767; ++raw) {
+        const q4_12 a = q4_12::from_raw(raw);
+        const double real = raw / 4096.0;
+        REQUIRE(rescale<q12_4>(a).raw == ref_round_clamp(real * 16.0, -32768, 32767));
+        const q12_4 b = q12_4::from_raw(raw);
+        REQUIRE(rescale<q4_12>(b).raw == ref_round_clamp(raw / 16.0 * 4096.0, -32768, 32767));
+        REQUIRE(rescale<q16_16>(b).raw == static_cast<int64_t>(raw) * 4096);
+    }
+}
+
+TEST_CASE("mul and div against double", "[fixed]") {
+    Pcg32 rng(2);
+    for (int i = 0; i < 300000; ++i) {
+        const q16_16 a = q16_16::from_raw(static_cast<int32_t>(rng.next()));
+        const q16_16 b = q16_16::from_raw(static_cast<int32_t>(rng.next()) >> (rng.next() % 24));
+        const double ra = a.raw / 65536.0, rb = b.raw / 65536.0;
+        REQUIRE(mul<q16_16>(a, b).raw == ref_round_clamp(ra * rb * 65536.0, INT32_MIN, INT32_MAX));
+        const q2_30 c = q2_30::from_raw(static_cast<int32_t>(rng.next()));
+        const double rc = c.raw / 1073741824.0;
+        REQUIRE(mul<q16_16>(a, c).raw == ref_round_clamp(ra * rc * 65536.0, INT32_MIN, INT32_MAX));
+        if (b.raw != 0) {
+            const double q = ra / rb * 65536.0;
+            const int64_t got = div<q16_16>(a, b).raw;
+            // The quotient is exact in integers; double may be off by one ulp near .5 ties.
+            REQUIRE(std::fabs(static_cast<double>(got) -
+                              static_cast<double>(ref_round_clamp(q, INT32_MIN, INT32_MAX))) <= 1.0);
+        }
+    }
+    REQUIRE(div<q16_16>(q16_16::from_int(1), q16_16::from_raw(0)).raw == INT32_MAX);
+    REQUIRE(div<q16_16>(q16_16::from_int(-1), q16_16::from_raw(0)).raw == INT32_MIN);
+    REQUIRE(div<q16_16>(q16_16::from_int(0), q16_16::from_raw(0)).raw == 0);
+}
+
+TEST_CASE("add_sat, sub_sat and neg_sat saturate instead of overflowing", "[fixed]") {
+    const q16_16 big = q16_16::from_raw(INT32_MAX - 5), small = q16_16::from_raw(INT32_MIN + 5);
+    REQUIRE(add_sat(big, q16_16::from_int(1)).raw == INT32_MAX);
+    REQUIRE(sub_sat(small, q16_16::from_int(1)).raw == INT32_MIN);
+    REQUIRE(neg_sat(q16_16::from_raw(INT32_MIN)).raw == INT32_MAX);
+    REQUIRE(add_sat(q16_16::from_ratio(3, 2), q16_16::from_ratio(1, 4)) == q16_16::from_ratio(7, 4));
+    REQUIRE(q16_16::from_ratio(-5, 2).round_int() == -3);
+    REQUIRE(q16_16::from_ratio(-5, 2).floor_int() == -3);
+    REQUIRE(q16_16::from_ratio(-9, 4).round_int() == -2);
+}
+
+TEST_CASE("wide 64x64 products round half away and saturate, against __int128", "[fixed]") {
+    Pcg32 rng(7);
+    for (int i = 0; i < 200000; ++i) {
+        const int bits_a = static_cast<int>(rng.below(64)), bits_b = static_cast<int>(rng.below(64));
+        const int64_t a = static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (63 - bits_a)) *
+                          (rng.below(2) ? 1 : -1);
+        const int64_t b = static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (63 - bits_b)) *
+                          (rng.below(2) ? 1 : -1);
+        const int n = static_cast<int>(rng.below(127));
+        const __int128 p = static_cast<__int128>(a) * b;
+        const __int128 mag = p < 0 ? -p : p;
+        __int128 q = n == 0 ? mag : (mag + (static_cast<__int128>(1) << (n - 1))) >> n;
+        if (q > INT64_MAX) q = INT64_MAX;
+        const int64_t want = static_cast<int64_t>(p < 0 ? -q : q);
+        INFO(a << " * " << b << " >> " << n);
+        REQUIRE(mul_shr_round(a, b, n) == want);
+    }
+    REQUIRE(mul_shr_round(INT64_MIN, INT64_MIN, 0) == INT64_MAX);
+    REQUIRE(mul_shr_round(INT64_MIN, INT64_MAX, 0) == -INT64_MAX);
+    REQUIRE(mul_shr_round(INT64_MIN, INT64_MIN, 126) == 1);  // 2^126 / 2^126
+    REQUIRE(mul_shr_round(-3, 1, 1) == -2);                  // -1.5: away from zero
+    REQUIRE(mul_shr_round(3, 1, 1) == 2);
+}

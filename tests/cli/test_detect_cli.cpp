@@ -1,0 +1,154 @@
+// `quadtrack detect` run in-process: its JSON parsed back and checked against the scene's
+// ground truth, and every error path (exit status and its one-line message).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/board_scene.h"
+#include "cli/detect_command.h"
+#include "io/image_io.h"
+#include "support/cli_run.h"
+#include "support/json_reader.h"
+#include "support/temp_dir.h"
+
+using qt::test::Json;
+using qt::test::JsonReader;
+
+namespace {
+
+using Run = qt::test::CliRun;
+
+Run detect(const std::vector<std::string>& args) { return qt::test::run_cli(qt::cli::run_detect, args); }
+
+// This process's own directory (each test case runs as its own process under ctest -j).
+std::filesystem::path temp_dir() {
+    static const qt::test::TempDir dir;
+    return dir.dir;
+}
+
+std::string write_file(const std::string& name, const std::string& bytes) {
+    const std::string path = (temp_dir() / name).string();
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    REQUIRE(f);
+    std::fwrite(bytes.data(), 1, bytes.size(), f);
+    std::fclose(f);
+    return path;
+}
+
+std::string board_pgm() {
+    const std::string path = (temp_dir() / "board.pgm").string();
+    std::string error;
+    REQUIRE(qt::io::write_pgm(path, qt::scene::render_board(qt::scene::default_board_scene()), error));
+    return path;
+}
+
+// One error: the status, nothing on stdout, exactly one line on stderr containing `fragment`.
+void require_error(const std::vector<std::string>& args, int status, const std::string& fragment) {
+    const Run r = detect(args);
+    INFO("stderr: " << r.err);
+    CHECK(r.status == status);
+    CHECK(r.out.empty());
+    REQUIRE(!r.err.empty());
+    CHECK(r.err.back() == '\n');
+    CHECK(r.err.find('\n') == r.err.size() - 1);
+    CHECK(r.err.rfind("quadtrack detect: ", 0) == 0);
+    CHECK(r.err.find(fragment) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("detect prints JSON with the board's corners anti-clockwise as seen", "[cli]") {
+    const Run r = detect({board_pgm()});
+    INFO("stderr: " << r.err);
+    REQUIRE(r.status == 0);
+    REQUIRE(r.err.empty());
+    REQUIRE(r.out.back() == '\n');
+    REQUIRE(r.out.find('\n') == r.out.size() - 1);  // one line: JSON Lines-ready
+    const Json j = JsonReader::parse(r.out);
+    CHECK(j["width"].num == 640);
+    CHECK(j["height"].num == 480);
+    CHECK(j["status"].str == "ok");
+    REQUIRE(j["lines"].items.size() >= 4);
+    for (const Json& l : j["lines"].items) {
+        for (const char* k : {"x1", "y1", "x2", "y2", "rho", "theta_deg"}) REQUIRE(l[k].type == Json::Type::number);
+        CHECK(l["rho"].num >= 0);
+        CHECK(l["theta_deg"].num >= 0);
+        CHECK(l["theta_deg"].num < 360);
+        // rho and theta describe the line through the end points.
+        const double t = l["theta_deg"].num * 3.14159265358979323846 / 180;
+        CHECK(std::fabs(l["x1"].num * std::cos(t) + l["y1"].num * std::sin(t) - l["rho"].num) < 0.01);
+        CHECK(std::fabs(l["x2"].num * std::cos(t) + l["y2"].num * std::sin(t) - l["rho"].num) < 0.01);
+    }
+    REQUIRE(j["quads"].items.size() >= 1);
+    const Json& q = j["quads"][0];
+    // The scene's corners (platform/scene/board_scene.cpp) in the order top-left, bottom-left,
+    // bottom-right, top-right: anti-clockwise as seen, starting at the smallest x + y.
+    const double truth[4][2] = {{188, 112}, {160, 318}, {430, 352}, {452, 150}};
+    REQUIRE(q["corners"].items.size() == 4);
+    for (int i = 0; i < 4; ++i) {
+        const Json& c = q["corners"][static_cast<size_t>(i)];
+        INFO("corner " << i << ": " << c[0].num << ", " << c[1].num);
+        CHECK(std::hypot(c[0].num - truth[i][0], c[1].num - truth[i][1]) < 1.0);
+    }
+    CHECK(q["score"].num > 0.8);
+    CHECK(q["score"].num <= 1.0);
+    // The display homography takes the display's corners (1024 × 768 by default) to the quad's.
+    const Json& h = q["display_homography"];
+    REQUIRE(h.items.size() == 3);
+    const double uv[4][2] = {{0, 0}, {0, 768}, {1024, 768}, {1024, 0}};
+    for (int i = 0; i < 4; ++i) {
+        double p[3];
+        for (size_t r2 = 0; r2 < 3; ++r2) p[r2] = h[r2][0].num * uv[i][0] + h[r2][1].num * uv[i][1] + h[r2][2].num;
+        const Json& c = q["corners"][static_cast<size_t>(i)];
+        CHECK(std::hypot(p[0] / p[2] - c[0].num, p[1] / p[2] - c[1].num) < 0.02);
+    }
+}
+
+TEST_CASE("detect takes options with the papers' names, in both spellings", "[cli]") {
+    const std::string img = board_pgm();
+    // A 1:1 display with a tight aspect tolerance rejects the 4:3-ish board (rule 5).
+    const Run square = detect({img, "--display", "500x500", "--aspect-tolerance=1.05"});
+    REQUIRE(square.status == 0);
+    CHECK(JsonReader::parse(square.out)["quads"].items.empty());
+    // Too high a vote threshold finds no lines at all.
+    const Run strict = detect({"--threshold", "255", "--min-line-length=2000", img});
+    REQUIRE(strict.status == 0);
+    CHECK(JsonReader::parse(strict.out)["lines"].items.empty());
+    const Run help = detect({"--help"});
+    CHECK(help.status == 0);
+    for (const char* name : {"--threshold", "--min-line-length", "--max-gap", "--parallel-tolerance",
+                             "--perpendicular-tolerance", "--min-side", "--max-side", "--display"})
+        CHECK(help.out.find(name) != std::string::npos);
+}
+
+TEST_CASE("detect: every error is one line on stderr and a non-zero exit", "[cli]") {
+    const std::string img = board_pgm();
+    require_error({}, 2, "no IMAGE given");
+    require_error({img, img}, 2, "one image only");
+    require_error({img, "--frobnicate", "3"}, 2, "unknown option '--frobnicate'");
+    require_error({img, "--threshold"}, 2, "--threshold needs a value");
+    require_error({img, "--threshold", "abc"}, 2, "'abc' is not an integer");
+    require_error({img, "--threshold", "0"}, 2, "out of range 1..255");
+    require_error({img, "--min-side=1e9"}, 2, "out of range");
+    require_error({img, "--display", "640"}, 2, "is not WxH");
+    require_error({img, "--rho", "3"}, 2, "3 is not 2 or 4");
+    require_error({img, "--min-side", "200", "--max-side", "100"}, 2, "--min-side is above --max-side");
+    const std::string missing = (temp_dir() / "no_such_file.pgm").string();
+    require_error({missing}, 1, "cannot open");
+    require_error({write_file("truncated_header.pgm", "P5\n64 ")}, 1, "truncated_header.pgm");
+    require_error({write_file("malformed.pgm", "P5\n64 x48\n255\n")}, 1, "malformed.pgm");
+    require_error({write_file("maxval.pgm", "P5\n2 2\n65535\n" + std::string(8, '\0'))}, 1, "unsupported maxval 65535");
+    require_error({write_file("raster.pgm", "P5\n4 4\n255\n" + std::string(5, 'a'))}, 1, "truncated");
+    require_error({write_file("notimage.txt", "hello world\n")}, 1, "not a PGM");
+    require_error({write_file("big.pgm", "P5\n641 480\n255\n" + std::string(641 * 480, '\0'))}, 1,
+                  "641 x 480 is over this build's capacity of 640 x 480");
+    // Control characters in the user's arguments still give one line (shown as '?').
+    require_error({img, "--threshold", "1\n2"}, 2, "'1?2' is not an integer");
+    require_error({img, "--frob\nnicate=3"}, 2, "unknown option '--frob?nicate'");
+    require_error({img, "two\rlines.pgm"}, 2, "'two?lines.pgm'");
+    require_error({img, "--threshold\n"}, 2, "unknown option '--threshold?'");
+}
