@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 ensure_packages cmake make g++ catch2 iverilog gcc-arm-none-eabi libnewlib-arm-none-eabi \
     libstdc++-arm-none-eabi-newlib qemu-system-arm g++-aarch64-linux-gnu qemu-user \
-    opencv-doc netpbm
+    opencv-doc netpbm clang-format
 jobs=$(nproc)
 for preset in host host-sanitize cortex-m4 cortex-m3 aarch64-linux; do
     echo "=== $preset"

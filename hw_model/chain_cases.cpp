@@ -2,23 +2,23 @@
 
 #include <cstdio>
 
+#include "api/result_text.h"
 #include "quads/board_detector.h"
 #include "scene/board_sequence.h"
 #include "scene/line_scene.h"
 #include "tracking/quad_tracker.h"
-#include "api/result_text.h"
 
 namespace qt::vec {
 
 std::vector<ChainCase> chain_cases() {
     std::vector<ChainCase> cases;
-    {   // The demo's moving board at half size, frames 2..9: bars hide the top and bottom sides
+    {  // The demo's moving board at half size, frames 2..9: bars hide the top and bottom sides
         // in the fourth to sixth.
         ChainCase c{"board_motion_qvga", {}};
         for (int f = 2; f <= 9; ++f) c.frames.push_back(scene::board_sequence_frame(f, 2).image);
         cases.push_back(c);
     }
-    {   // Three shapes over blobs and texture, blurred and noisy: a cluttered frame.
+    {  // Three shapes over blobs and texture, blurred and noisy: a cluttered frame.
         scene::SceneOptions o;
         o.noise_sigma = 5;
         o.blur_sigma = 0.8;
@@ -37,7 +37,8 @@ std::string frame_name(const ChainCase& c, size_t k) {
 }
 
 std::string format_pgm(const io::GreyImage& img) {
-    std::string s = "P5\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n255\n";
+    std::string s =
+        "P5\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n255\n";
     s.append(img.pixels.begin(), img.pixels.end());
     return s;
 }
@@ -52,16 +53,18 @@ std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases) {
         std::string text;
         for (size_t k = 0; k < c.frames.size(); ++k) {
             const io::GreyImage& frame = c.frames[k];
-            if (det.begin_frame(static_cast<uint16_t>(frame.width), static_cast<uint16_t>(frame.height), params) !=
-                Status::ok) {
+            if (det.begin_frame(static_cast<uint16_t>(frame.width),
+                                static_cast<uint16_t>(frame.height), params) != Status::ok) {
                 text += "error: frame does not fit BoardDetectorQvga\n";
                 break;
             }
-            for (int y = 0; y < frame.height; ++y) det.push_row(frame.row(y), static_cast<uint16_t>(frame.width));
+            for (int y = 0; y < frame.height; ++y)
+                det.push_row(frame.row(y), static_cast<uint16_t>(frame.width));
             const Status status = det.finish();
-            const TrackedQuad track =
-                tracker.step(det.lines().lines(), det.lines().line_count(), det.quads(), det.quad_count());
-            write_frame_text(frame_name(c, k).c_str(), det, status, track, tracker.stats().lost_reason,
+            const TrackedQuad track = tracker.step(det.lines().lines(), det.lines().line_count(),
+                                                   det.quads(), det.quad_count());
+            write_frame_text(frame_name(c, k).c_str(), det, status, track,
+                             tracker.stats().lost_reason,
                              [&](const char* line, size_t length) { text.append(line, length); });
         }
         texts.push_back(text);

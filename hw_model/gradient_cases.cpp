@@ -1,7 +1,7 @@
 #include "gradient_cases.h"
 
-#include "scene/board_scene.h"
 #include "base/prng.h"
+#include "scene/board_scene.h"
 
 namespace qt::vec {
 
@@ -64,9 +64,10 @@ GradientCase torn_stream(uint64_t seed) {
         ++c.frames;
         return noise(w, h, rng);
     };
-    for (int i = 0; i < 3; ++i) s.push_back(InBeat{static_cast<uint8_t>(i), false, false, 0});  // stray beats
+    for (int i = 0; i < 3; ++i)
+        s.push_back(InBeat{static_cast<uint8_t>(i), false, false, 0});  // stray beats
     good(6, 4);
-    {   // short row 2: error, the rest of the frame is dropped
+    {  // short row 2: error, the rest of the frame is dropped
         const auto img = bad(6, 5);
         append_beats(img, 2, s, 5);
         for (int x = 0; x < 4; ++x) s.push_back(InBeat{img.at(x, 2), false, x == 3, 0});
@@ -77,13 +78,16 @@ GradientCase torn_stream(uint64_t seed) {
     append_beats(bad(7, 6), 3, s, 6);  // ends after 3 of 6 rows: the next start is an error
     good(4, 3);
     append_beats(bad(5, 2), 2, s, 0);  // declared height 0: error, beats dropped
-    {   // row 0 of 700 pixels without an end of line: error at column MAX_WIDTH - 1
+    {  // row 0 of 700 pixels without an end of line: error at column MAX_WIDTH - 1
         const auto img = bad(700, 1);
-        for (int x = 0; x < 700; ++x) s.push_back(InBeat{img.at(x, 0), x == 0, false, static_cast<uint16_t>(x == 0 ? 1 : 0)});
+        for (int x = 0; x < 700; ++x)
+            s.push_back(InBeat{img.at(x, 0), x == 0, false, static_cast<uint16_t>(x == 0 ? 1 : 0)});
     }
-    {   // row 1 runs past the width learnt from row 0: error at column 7
+    {  // row 1 runs past the width learnt from row 0: error at column 7
         const auto img = bad(9, 2);
-        for (int x = 0; x < 8; ++x) s.push_back(InBeat{img.at(x, 0), x == 0, x == 7, static_cast<uint16_t>(x == 0 ? 2 : 0)});
+        for (int x = 0; x < 8; ++x)
+            s.push_back(
+                InBeat{img.at(x, 0), x == 0, x == 7, static_cast<uint16_t>(x == 0 ? 2 : 0)});
         for (int x = 0; x < 9; ++x) s.push_back(InBeat{img.at(x, 1), false, x == 8, 0});
     }
     good(3, 3);
@@ -112,7 +116,7 @@ std::vector<GradientCase> gradient_cases() {
         const scene::BoardScene board = scene::default_board_scene();
         cases.push_back(single("board_640x480", board.seed, scene::render_board(board)));
     }
-    {   // back-to-back frames of different sizes, including the widest and a 1-wide one
+    {  // back-to-back frames of different sizes, including the widest and a 1-wide one
         const uint64_t seed = 18;
         Pcg32 rng(seed);
         GradientCase c{"multi_sizes", seed, "", 0, {}};

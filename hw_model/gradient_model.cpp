@@ -19,8 +19,9 @@ void GradientModel::emit(int x, const std::vector<uint8_t>& above,
     const int left = x > 0 ? x - 1 : 0;
     const int right = x + 1 < width_ ? x + 1 : width_ - 1;
     OutBeat b;
-    b.word = make_gradient_word(center[static_cast<size_t>(right)] - center[static_cast<size_t>(left)],
-                                below[static_cast<size_t>(x)] - above[static_cast<size_t>(x)]);
+    b.word =
+        make_gradient_word(center[static_cast<size_t>(right)] - center[static_cast<size_t>(left)],
+                           below[static_cast<size_t>(x)] - above[static_cast<size_t>(x)]);
     b.tuser = first_word_pending_;
     b.tlast = last_of_row;
     first_word_pending_ = false;
@@ -55,7 +56,8 @@ void GradientModel::push(const InBeat& beat, std::vector<OutBeat>& out) {
             width_ = x_ + 1;
             above_ = center_;
             if (height_ == 1) {
-                for (int x = 0; x < width_; ++x) emit(x, center_, center_, center_, x == width_ - 1, out);
+                for (int x = 0; x < width_; ++x)
+                    emit(x, center_, center_, center_, x == width_ - 1, out);
                 state_ = State::idle;
             } else {
                 state_ = State::rows;

@@ -30,7 +30,7 @@ private:
     int max_width_;
     State state_ = State::idle;
     int width_ = 0, height_ = 0, x_ = 0, y_ = 0, errors_ = 0;
-    bool first_word_pending_ = false;  // the next word emitted carries tuser
+    bool first_word_pending_ = false;              // the next word emitted carries tuser
     std::vector<uint8_t> above_, center_, below_;  // rows y-2, y-1 and the arriving row y
 };
 

@@ -13,7 +13,8 @@ ChainCase photo_chain_case(const std::vector<io::NamedImage>& photos) {
         o.board = k < 9;
         o.occlude = k >= 6 && k < 9;
         const io::GreyImage& photo = photos[static_cast<size_t>(k) * 7 % photos.size()].image;
-        c.frames.push_back(scene::make_photo_board_scene(o, photo, 8000000u + static_cast<uint64_t>(k)).image);
+        c.frames.push_back(
+            scene::make_photo_board_scene(o, photo, 8000000u + static_cast<uint64_t>(k)).image);
     }
     return c;
 }

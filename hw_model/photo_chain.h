@@ -1,7 +1,7 @@
 // The chain case of real photographs for the firmware's budget (platform/firmware): boards
-// composited onto Debian's opencv-doc photographs at QVGA (platform/scene/photo_board_scene.h) — six
-// unoccluded, three with a side partly hidden, three without a board — fixed seeds, so that
-// the firmware runs the same frames the host's chain_texts() describes.
+// composited onto Debian's opencv-doc photographs at QVGA (platform/scene/photo_board_scene.h) —
+// six unoccluded, three with a side partly hidden, three without a board — fixed seeds, so that the
+// firmware runs the same frames the host's chain_texts() describes.
 #pragma once
 #include <vector>
 

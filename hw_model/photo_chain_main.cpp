@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
         }
     };
     for (size_t k = 0; k < photo_case.frames.size(); ++k)
-        write(qt::vec::frame_name(photo_case, k) + ".pgm", qt::vec::format_pgm(photo_case.frames[k]));
+        write(qt::vec::frame_name(photo_case, k) + ".pgm",
+              qt::vec::format_pgm(photo_case.frames[k]));
     write(photo_case.name + ".chain.txt", texts.back());
     return 0;
 }

@@ -4,8 +4,10 @@
 //   qt_vectors --write ROOT            regenerate ROOT/vectors/gradient/, ROOT/vectors/scenes/ and
 //                                      ROOT/hdl/rtl/gradient_word.vh
 //   qt_vectors --check ROOT            exit 1 unless every committed file equals a fresh generation
-//   qt_vectors --direction-table FILE  expected direction bin of every (gx, gy), gx outer, gy inner,
-//                                      -255..255 each, one hex digit per line (hdl/bench/tb_direction.v)
+//   qt_vectors --direction-table FILE  expected direction bin of every (gx, gy), gx outer, gy
+//   inner,
+//                                      -255..255 each, one hex digit per line
+//                                      (hdl/bench/tb_direction.v)
 //   qt_vectors --soak SEED PIXELS PREFIX  a soak stream (docs/gradient.md, "Soak") of at least
 //                                      PIXELS input beats: PREFIX.in.hex, PREFIX.out.hex,
 //                                      PREFIX.resets.hex; prints its counts on one line
@@ -16,9 +18,9 @@
 #include <sstream>
 #include <string>
 
+#include "chain_cases.h"
 #include "gradient_cases.h"
 #include "gradient_model.h"
-#include "chain_cases.h"
 #include "soak_stream.h"
 
 namespace {
@@ -36,8 +38,9 @@ Files generate() {
         const std::string dir = "vectors/gradient/";
         files[dir + c.name + ".in.hex"] = in_text;
         files[dir + c.name + ".out.hex"] = out_text;
-        ManifestEntry e{c.name, c.sizes, c.frames, c.seed, c.in.size(), out.size(), errors,
-                        kVectorMaxWidth, fnv1a64(out_text, fnv1a64(in_text))};
+        ManifestEntry e{c.name, c.sizes,         c.frames,
+                        c.seed, c.in.size(),     out.size(),
+                        errors, kVectorMaxWidth, fnv1a64(out_text, fnv1a64(in_text))};
         manifest += format_manifest_line(e);
     }
     files["vectors/gradient/manifest.txt"] = manifest;
@@ -70,7 +73,8 @@ int write_all(const std::string& root) {
             return 1;
         }
     }
-    std::printf("wrote vectors/gradient/, vectors/scenes/ and hdl/rtl/gradient_word.vh under %s\n", root.c_str());
+    std::printf("wrote vectors/gradient/, vectors/scenes/ and hdl/rtl/gradient_word.vh under %s\n",
+                root.c_str());
     return 0;
 }
 
@@ -91,8 +95,10 @@ int check_all(const std::string& root) {
         ++checked;
     }
     if (bad) {
-        std::fprintf(stderr, "%d of %zu generated files differ from the committed ones; "
-                             "regenerate with: qt_vectors --write <repo root>\n", bad, checked);
+        std::fprintf(stderr,
+                     "%d of %zu generated files differ from the committed ones; "
+                     "regenerate with: qt_vectors --write <repo root>\n",
+                     bad, checked);
         return 1;
     }
     std::printf("all %zu generated files match the committed ones\n", checked);
@@ -102,7 +108,8 @@ int check_all(const std::string& root) {
 int direction_table(const std::string& path) {
     std::ofstream f(path);
     for (int gx = -255; gx <= 255; ++gx)
-        for (int gy = -255; gy <= 255; ++gy) f << "0123456789abcdef"[qt::direction_bin(gx, gy)] << '\n';
+        for (int gy = -255; gy <= 255; ++gy)
+            f << "0123456789abcdef"[qt::direction_bin(gx, gy)] << '\n';
     if (!f) {
         std::fprintf(stderr, "qt_vectors: cannot write %s\n", path.c_str());
         return 1;
@@ -123,18 +130,20 @@ int soak(const char* seed_text, const char* pixels_text, const std::string& pref
     uint64_t seed = 0, pixels = 0;
     if (!parse_count(seed_text, seed) || !parse_count(pixels_text, pixels) || pixels == 0 ||
         pixels > 100000000) {
-        std::fprintf(stderr, "qt_vectors --soak: SEED must be an unsigned integer and PIXELS "
-                             "1..100000000\n");
+        std::fprintf(stderr,
+                     "qt_vectors --soak: SEED must be an unsigned integer and PIXELS "
+                     "1..100000000\n");
         return 2;
     }
     const SoakStream s = make_soak_stream(seed, pixels, kVectorMaxWidth);
-    const std::pair<const char*, std::string> files[] = {
-        {".in.hex", format_in(s.in)}, {".out.hex", format_out(s.out)},
-        {".resets.hex", format_resets(s.resets)}};
+    const std::pair<const char*, std::string> files[] = {{".in.hex", format_in(s.in)},
+                                                         {".out.hex", format_out(s.out)},
+                                                         {".resets.hex", format_resets(s.resets)}};
     std::vector<ResetPoint> back;
     std::string error;
     if (!parse_resets(files[2].second, back, error) || back != s.resets) {
-        std::fprintf(stderr, "qt_vectors --soak: reset points do not read back: %s\n", error.c_str());
+        std::fprintf(stderr, "qt_vectors --soak: reset points do not read back: %s\n",
+                     error.c_str());
         return 1;
     }
     for (const auto& [suffix, text] : files) {
@@ -151,11 +160,12 @@ int soak(const char* seed_text, const char* pixels_text, const std::string& pref
         kinds += std::string(" ") + soak_fault_name(static_cast<SoakFault>(k)) + "=" +
                  std::to_string(s.faults[k]);
     }
-    std::printf("soak seed=%llu max_width=%d in_beats=%zu out_beats=%zu errors=%d resets=%zu "
-                "pixels=%llu frames=%d clean_frames=%d faults=%d%s\n",
-                static_cast<unsigned long long>(seed), kVectorMaxWidth, s.in.size(), s.out.size(),
-                s.errors, s.resets.size(), static_cast<unsigned long long>(s.pixels), s.frames,
-                s.clean_frames, faults, kinds.c_str());
+    std::printf(
+        "soak seed=%llu max_width=%d in_beats=%zu out_beats=%zu errors=%d resets=%zu "
+        "pixels=%llu frames=%d clean_frames=%d faults=%d%s\n",
+        static_cast<unsigned long long>(seed), kVectorMaxWidth, s.in.size(), s.out.size(), s.errors,
+        s.resets.size(), static_cast<unsigned long long>(s.pixels), s.frames, s.clean_frames,
+        faults, kinds.c_str());
     return 0;
 }
 
@@ -169,7 +179,8 @@ int main(int argc, char** argv) {
         if (mode == "--check") return check_all(argv[2]);
         if (mode == "--direction-table") return direction_table(argv[2]);
     }
-    std::fprintf(stderr, "usage: qt_vectors --write ROOT | --check ROOT | --direction-table FILE | "
-                         "--soak SEED PIXELS PREFIX\n");
+    std::fprintf(stderr,
+                 "usage: qt_vectors --write ROOT | --check ROOT | --direction-table FILE | "
+                 "--soak SEED PIXELS PREFIX\n");
     return 2;
 }

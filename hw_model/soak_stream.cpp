@@ -3,8 +3,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "gradient_model.h"
 #include "base/prng.h"
+#include "gradient_model.h"
 
 namespace qt::vec {
 
@@ -57,7 +57,7 @@ private:
 
     Pcg32 rng_;
     int max_width_;
-    int mode_ = 0;        // pixel statistics of the current frame
+    int mode_ = 0;  // pixel statistics of the current frame
     uint8_t level_ = 0;
     std::vector<Cut> cuts_;
 };
@@ -70,7 +70,8 @@ int Generator::pick_width() {
     if (r < 13) return 2;
     if (r < 16) return max_width_;
     const int span = 2 << below(10);  // 2..1024
-    return 1 + static_cast<int>(below(static_cast<uint32_t>(span < max_width_ ? span : max_width_)));
+    return 1 +
+           static_cast<int>(below(static_cast<uint32_t>(span < max_width_ ? span : max_width_)));
 }
 
 int Generator::pick_height() {

@@ -32,12 +32,12 @@ const char* soak_fault_name(SoakFault f);
 
 struct SoakStream {
     std::vector<InBeat> in;
-    std::vector<OutBeat> out;         // the model's words, segment after segment
-    std::vector<ResetPoint> resets;   // in stream order (vector_format.h)
-    int errors = 0;                   // error pulses over the whole stream
-    uint64_t pixels = 0;              // input beats inside frames (all but the stray beats)
-    int frames = 0;                   // start-of-frame beats
-    int clean_frames = 0;             // frames sent whole with no fault and no reset inside
+    std::vector<OutBeat> out;        // the model's words, segment after segment
+    std::vector<ResetPoint> resets;  // in stream order (vector_format.h)
+    int errors = 0;                  // error pulses over the whole stream
+    uint64_t pixels = 0;             // input beats inside frames (all but the stray beats)
+    int frames = 0;                  // start-of-frame beats
+    int clean_frames = 0;            // frames sent whole with no fault and no reset inside
     int faults[kSoakFaultKinds] = {};
 };
 

@@ -59,9 +59,9 @@ struct ManifestEntry {
     uint64_t seed = 0;
     size_t in_beats = 0;
     size_t out_beats = 0;
-    int errors = 0;      // framing errors the block must report on this stream
-    int max_width = 0;   // MAX_WIDTH the expectations assume
-    uint64_t hash = 0;   // FNV-1a 64 of the .in.hex bytes followed by the .out.hex bytes
+    int errors = 0;     // framing errors the block must report on this stream
+    int max_width = 0;  // MAX_WIDTH the expectations assume
+    uint64_t hash = 0;  // FNV-1a 64 of the .in.hex bytes followed by the .out.hex bytes
 };
 
 std::string format_in(const std::vector<InBeat>& beats);

@@ -7,9 +7,9 @@
 #include <type_traits>
 #include <utility>
 
+#include "base/status.h"
 #include "quads/board_detector.h"
 #include "tracking/quad_tracker.h"
-#include "base/status.h"
 
 namespace {
 
@@ -33,40 +33,49 @@ static_assert(sizeof(DetectorBox) <= QT_DETECTOR_BYTES, "QT_DETECTOR_BYTES too s
 static_assert(alignof(DetectorBox) <= alignof(qt_detector), "qt_detector under-aligned");
 static_assert(sizeof(TrackerBox) <= QT_TRACKER_BYTES, "QT_TRACKER_BYTES too small");
 static_assert(alignof(TrackerBox) <= alignof(qt_tracker), "qt_tracker under-aligned");
-static_assert(std::is_trivially_destructible<DetectorBox>::value, "constructed over, never destroyed");
-static_assert(std::is_trivially_destructible<TrackerBox>::value, "constructed over, never destroyed");
+static_assert(std::is_trivially_destructible<DetectorBox>::value,
+              "constructed over, never destroyed");
+static_assert(std::is_trivially_destructible<TrackerBox>::value,
+              "constructed over, never destroyed");
 
 // The header's capacities are the template arguments of the QVGA types.
-template <class> struct LineCaps;
+template <class>
+struct LineCaps;
 template <uint16_t W, uint16_t H, uint16_t E, uint32_t B, uint16_t T, uint16_t S, uint16_t L>
 struct LineCaps<qt::LineDetector<W, H, E, B, T, S, L>> {
     static constexpr uint16_t width = W, height = H, lines = L;
 };
-using QvgaCaps = LineCaps<std::decay_t<decltype(std::declval<const qt::BoardDetectorQvga&>().lines())>>;
+using QvgaCaps =
+    LineCaps<std::decay_t<decltype(std::declval<const qt::BoardDetectorQvga&>().lines())>>;
 static_assert(QvgaCaps::width == QT_MAX_WIDTH && QvgaCaps::height == QT_MAX_HEIGHT, "frame size");
 static_assert(QvgaCaps::lines == QT_MAX_LINES, "line capacity");
 static_assert(qt::BoardDetectorQvga::max_quads() == QT_MAX_QUADS, "quadrangle capacity");
 
 // Numbers shared with the C++ enums.
-constexpr bool same(qt::Status s, qt_status c) { return static_cast<int>(s) == static_cast<int>(c); }
+constexpr bool same(qt::Status s, qt_status c) {
+    return static_cast<int>(s) == static_cast<int>(c);
+}
 static_assert(same(qt::Status::ok, QT_OK) && same(qt::Status::bad_size, QT_BAD_SIZE) &&
-              same(qt::Status::bad_row_length, QT_BAD_ROW_LENGTH) &&
-              same(qt::Status::not_in_frame, QT_NOT_IN_FRAME) &&
-              same(qt::Status::previous_frame_incomplete, QT_PREVIOUS_FRAME_INCOMPLETE) &&
-              same(qt::Status::capacity_exceeded, QT_CAPACITY_EXCEEDED), "qt_status mirrors qt::Status");
+                  same(qt::Status::bad_row_length, QT_BAD_ROW_LENGTH) &&
+                  same(qt::Status::not_in_frame, QT_NOT_IN_FRAME) &&
+                  same(qt::Status::previous_frame_incomplete, QT_PREVIOUS_FRAME_INCOMPLETE) &&
+                  same(qt::Status::capacity_exceeded, QT_CAPACITY_EXCEEDED),
+              "qt_status mirrors qt::Status");
 static_assert(static_cast<int>(qt::Contrast::bright_board) == QT_CONTRAST_BRIGHT &&
-              static_cast<int>(qt::Contrast::dark_board) == QT_CONTRAST_DARK &&
-              static_cast<int>(qt::Contrast::any) == QT_CONTRAST_ANY, "qt_contrast mirrors qt::Contrast");
+                  static_cast<int>(qt::Contrast::dark_board) == QT_CONTRAST_DARK &&
+                  static_cast<int>(qt::Contrast::any) == QT_CONTRAST_ANY,
+              "qt_contrast mirrors qt::Contrast");
 static_assert(static_cast<int>(qt::LineModel::closest_points) == QT_MODEL_PAPER &&
-              static_cast<int>(qt::LineModel::turn) == QT_MODEL_TURN, "qt_model mirrors qt::LineModel");
+                  static_cast<int>(qt::LineModel::turn) == QT_MODEL_TURN,
+              "qt_model mirrors qt::LineModel");
 static_assert(static_cast<int>(qt::TrackState::none) == QT_TRACK_NONE &&
-              static_cast<int>(qt::TrackState::started) == QT_TRACK_STARTED &&
-              static_cast<int>(qt::TrackState::tracking) == QT_TRACK_TRACKING,
+                  static_cast<int>(qt::TrackState::started) == QT_TRACK_STARTED &&
+                  static_cast<int>(qt::TrackState::tracking) == QT_TRACK_TRACKING,
               "qt_track_state mirrors qt::TrackState");
 static_assert(static_cast<int>(qt::lost_side_unseen) == QT_LOST_SIDE_UNSEEN &&
-              static_cast<int>(qt::lost_shape) == QT_LOST_SHAPE &&
-              static_cast<int>(qt::lost_saturated) == QT_LOST_SATURATED &&
-              static_cast<int>(qt::lost_detection_disagrees) == QT_LOST_DETECTION_DISAGREES,
+                  static_cast<int>(qt::lost_shape) == QT_LOST_SHAPE &&
+                  static_cast<int>(qt::lost_saturated) == QT_LOST_SATURATED &&
+                  static_cast<int>(qt::lost_detection_disagrees) == QT_LOST_DETECTION_DISAGREES,
               "qt_track_lost mirrors qt::QuadTrackLost");
 static_assert(std::is_same<qt_gradient_word, qt::gradient_word>::value, "gradient word");
 
@@ -77,7 +86,8 @@ constexpr uint32_t whole_degrees(qt::angle_t a) {
 // The config states these defaults in whole degrees and pixels: they must convert exactly.
 constexpr qt::QuadTrackerParams kTrackDefaults{};
 static_assert(qt::angle_from_deg(static_cast<int32_t>(whole_degrees(kTrackDefaults.gate_angle))) ==
-                  kTrackDefaults.gate_angle, "default gate angle is not whole degrees");
+                  kTrackDefaults.gate_angle,
+              "default gate angle is not whole degrees");
 static_assert(kTrackDefaults.gate_distance.raw % qt::q16_16::one_raw == 0,
               "default gate distance is not whole pixels");
 
@@ -87,11 +97,15 @@ bool frame_size_ok(uint16_t width, uint16_t height) {
     return width >= 1 && width <= QT_MAX_WIDTH && height >= 1 && height <= QT_MAX_HEIGHT;
 }
 
-DetectorBox& box(qt_detector* d) { return *std::launder(reinterpret_cast<DetectorBox*>(d->opaque.bytes)); }
+DetectorBox& box(qt_detector* d) {
+    return *std::launder(reinterpret_cast<DetectorBox*>(d->opaque.bytes));
+}
 const DetectorBox& box(const qt_detector* d) {
     return *std::launder(reinterpret_cast<const DetectorBox*>(d->opaque.bytes));
 }
-TrackerBox& box(qt_tracker* t) { return *std::launder(reinterpret_cast<TrackerBox*>(t->opaque.bytes)); }
+TrackerBox& box(qt_tracker* t) {
+    return *std::launder(reinterpret_cast<TrackerBox*>(t->opaque.bytes));
+}
 
 qt_line to_c(const qt::Segment& s) {
     qt_line l{};
@@ -146,11 +160,12 @@ void qt_config_default(qt_config* config, uint16_t width, uint16_t height) {
 qt_status qt_config_check(const qt_config* c) {
     if (c == nullptr) return QT_NULL_POINTER;
     // The command line's ranges (platform/cli/cli_options.cpp), in the same units.
-    const bool ok = c->edge_threshold >= 1 && c->edge_threshold <= 510 &&
-                    c->hough_threshold >= 1 && c->hough_threshold <= 255 &&
-                    c->min_line_length >= 2 && c->min_line_length <= 2048 && c->max_line_gap <= 255 &&
-                    c->contrast <= QT_CONTRAST_ANY && c->model <= QT_MODEL_TURN && c->filters >= 1 &&
-                    c->filters <= 3 && c->gate_angle_deg <= 90 && c->gate_distance_px <= 1000;
+    const bool ok = c->edge_threshold >= 1 && c->edge_threshold <= 510 && c->hough_threshold >= 1 &&
+                    c->hough_threshold <= 255 && c->min_line_length >= 2 &&
+                    c->min_line_length <= 2048 && c->max_line_gap <= 255 &&
+                    c->contrast <= QT_CONTRAST_ANY && c->model <= QT_MODEL_TURN &&
+                    c->filters >= 1 && c->filters <= 3 && c->gate_angle_deg <= 90 &&
+                    c->gate_distance_px <= 1000;
     return ok ? QT_OK : QT_BAD_CONFIG;
 }
 
@@ -191,7 +206,8 @@ qt_status qt_push_row(qt_detector* detector, const uint8_t* pixels, uint16_t len
     return to_c(b.det.push_row(pixels, length));
 }
 
-qt_status qt_push_gradient_row(qt_detector* detector, const qt_gradient_word* words, uint16_t width) {
+qt_status qt_push_gradient_row(qt_detector* detector, const qt_gradient_word* words,
+                               uint16_t width) {
     if (detector == nullptr || words == nullptr) return QT_NULL_POINTER;
     DetectorBox& b = box(detector);
     if (!b.configured) return QT_BAD_CONFIG;
@@ -243,7 +259,8 @@ qt_status qt_get_quad(const qt_detector* detector, uint16_t index, qt_quad* out)
     return QT_OK;
 }
 
-qt_status qt_tracker_init(qt_tracker* tracker, const qt_config* config, uint16_t width, uint16_t height) {
+qt_status qt_tracker_init(qt_tracker* tracker, const qt_config* config, uint16_t width,
+                          uint16_t height) {
     if (tracker == nullptr) return QT_NULL_POINTER;
     TrackerBox& b = *new (tracker->opaque.bytes) TrackerBox();
     const qt_status s = qt_config_check(config);

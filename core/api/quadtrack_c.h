@@ -171,32 +171,32 @@ typedef struct qt_quad {
 
 /* Values of qt_tracked_quad.state. */
 enum qt_track_state {
-    QT_TRACK_NONE = 0,     /* no quadrangle this frame */
-    QT_TRACK_STARTED = 1,  /* a new track from this frame's best detected quadrangle */
-    QT_TRACK_TRACKING = 2  /* carried by the side trackers (see detected) */
+    QT_TRACK_NONE = 0,    /* no quadrangle this frame */
+    QT_TRACK_STARTED = 1, /* a new track from this frame's best detected quadrangle */
+    QT_TRACK_TRACKING = 2 /* carried by the side trackers (see detected) */
 };
 
 /* Values of qt_tracked_quad.lost_reason: why a track ended this frame. */
 enum qt_track_lost {
     QT_LOST_NONE = 0,
-    QT_LOST_SIDE_UNSEEN = 1,         /* a side predicted for more than max_predicted frames */
-    QT_LOST_SHAPE = 2,               /* the sides no longer make a convex quadrangle with
+    QT_LOST_SIDE_UNSEEN = 1,        /* a side predicted for more than max_predicted frames */
+    QT_LOST_SHAPE = 2,              /* the sides no longer make a convex quadrangle with
                                         sides of 20..2048 px */
-    QT_LOST_SATURATED = 3,           /* a filter saturated */
-    QT_LOST_DETECTION_DISAGREES = 4  /* no side matched, and the detection is elsewhere */
+    QT_LOST_SATURATED = 3,          /* a filter saturated */
+    QT_LOST_DETECTION_DISAGREES = 4 /* no side matched, and the detection is elsewhere */
 };
 
 /* One frame of the tracker (quad_tracker.h). */
 typedef struct qt_tracked_quad {
-    uint8_t state;          /* enum qt_track_state */
-    uint8_t detected;       /* bit i: side i was matched to a detected line this frame, else
+    uint8_t state;       /* enum qt_track_state */
+    uint8_t detected;    /* bit i: side i was matched to a detected line this frame, else
                                it was predicted */
-    uint8_t lost_reason;    /* enum qt_track_lost: a track that ended this frame (a new one may
+    uint8_t lost_reason; /* enum qt_track_lost: a track that ended this frame (a new one may
                                have started in the same frame: see state) */
-    uint32_t track_id;      /* 1, 2, ...: a new id every time a track starts; 0 with no track */
-    uint32_t age;           /* frames since the track started, 0 on its first frame */
-    qt_point corners[4];    /* q16.16 px, in qt_quad's order; zero when state is NONE */
-    qt_line sides[4];       /* side i's line, corner i to corner i + 1, measured or predicted */
+    uint32_t track_id;   /* 1, 2, ...: a new id every time a track starts; 0 with no track */
+    uint32_t age;        /* frames since the track started, 0 on its first frame */
+    qt_point corners[4]; /* q16.16 px, in qt_quad's order; zero when state is NONE */
+    qt_line sides[4];    /* side i's line, corner i to corner i + 1, measured or predicted */
 } qt_tracked_quad;
 
 /* ---- Detector ------------------------------------------------------------------------- */
@@ -221,7 +221,8 @@ typedef uint32_t qt_gradient_word;
 
 /* The next row of gradient words instead of camera pixels (one or the other for a whole
  * frame); `width` must equal the frame width. */
-qt_status qt_push_gradient_row(qt_detector* detector, const qt_gradient_word* words, uint16_t width);
+qt_status qt_push_gradient_row(qt_detector* detector, const qt_gradient_word* words,
+                               uint16_t width);
 
 /* After the last row: lines, then quadrangles. QT_OK or QT_CAPACITY_EXCEEDED: the results are
  * valid (the latter: some were cut). QT_NOT_IN_FRAME when no frame was begun, or before the
@@ -243,7 +244,8 @@ qt_status qt_get_quad(const qt_detector* detector, uint16_t index, qt_quad* out)
  * size places the filters' origins) with the config's tracker fields. After QT_BAD_CONFIG,
  * QT_BAD_SIZE or a NULL config the tracker refuses qt_track with QT_BAD_CONFIG until
  * initialised again. No track until the first qt_track with a quadrangle. */
-qt_status qt_tracker_init(qt_tracker* tracker, const qt_config* config, uint16_t width, uint16_t height);
+qt_status qt_tracker_init(qt_tracker* tracker, const qt_config* config, uint16_t width,
+                          uint16_t height);
 
 /* Drops the current track (the next track gets a new id). */
 qt_status qt_tracker_reset(qt_tracker* tracker);

@@ -56,8 +56,9 @@ size_t format_frame_header(const char* name, uint32_t edges, uint32_t segments, 
 }
 
 size_t format_line_text(const Segment& s, char* out) {
-    const int64_t fields[] = {s.x1.raw, s.y1.raw, s.x2.raw, s.y2.raw, s.rho.raw,
-                              static_cast<int64_t>(s.theta), s.cx.raw, s.cy.raw, s.points, s.bright_side};
+    const int64_t fields[] = {
+        s.x1.raw, s.y1.raw, s.x2.raw, s.y2.raw,     s.rho.raw, static_cast<int64_t>(s.theta),
+        s.cx.raw, s.cy.raw, s.points, s.bright_side};
     char* p = out;
     for (size_t i = 0; i < sizeof fields / sizeof fields[0]; ++i) {
         if (i != 0) *p++ = ' ';

@@ -19,10 +19,10 @@
 #pragma once
 #include <stddef.h>
 
+#include "base/status.h"
+#include "lines/segment.h"
 #include "quads/quad_detector.h"
 #include "tracking/quad_tracker.h"
-#include "lines/segment.h"
-#include "base/status.h"
 
 namespace qt {
 
@@ -51,14 +51,17 @@ size_t format_track_text(const TrackedQuad& t, uint8_t lost_reason, char* out);
 // the lines, the quadrangles and the track. `det` is a BoardDetector (board_detector.h) after
 // finish(), which returned `status`.
 template <class Detector, class Sink>
-void write_frame_text(const char* name, const Detector& det, Status status, const TrackedQuad& track,
-                      uint8_t lost_reason, Sink&& sink) {
+void write_frame_text(const char* name, const Detector& det, Status status,
+                      const TrackedQuad& track, uint8_t lost_reason, Sink&& sink) {
     char text[kResultTextMax];
     const auto& lines = det.lines();
-    sink(text, format_frame_header(name, lines.stats().edges, lines.segment_count(), lines.line_count(), text));
-    for (uint16_t i = 0; i < lines.line_count(); ++i) sink(text, format_line_text(lines.lines()[i], text));
+    sink(text, format_frame_header(name, lines.stats().edges, lines.segment_count(),
+                                   lines.line_count(), text));
+    for (uint16_t i = 0; i < lines.line_count(); ++i)
+        sink(text, format_line_text(lines.lines()[i], text));
     sink(text, format_quads_header(det.quad_count(), status, text));
-    for (uint16_t i = 0; i < det.quad_count(); ++i) sink(text, format_quad_text(det.quads()[i], text));
+    for (uint16_t i = 0; i < det.quad_count(); ++i)
+        sink(text, format_quad_text(det.quads()[i], text));
     sink(text, format_track_text(track, lost_reason, text));
 }
 

@@ -6,11 +6,11 @@ namespace {
 
 // atan(2^-i) in binary-angle units: round(atan(2^-i) / (2π) · 2^32), i = 0..29.
 // tests/base/test_angle.cpp bounds atan2_angle and sin_cos against std::atan2, std::sin, std::cos.
-constexpr uint32_t kAtanTable[30] = {
-    536870912, 316933406, 167458907, 85004756, 42667331, 21354465, 10679838, 5340245,
-    2670163,   1335087,   667544,    333772,   166886,   83443,    41722,    20861,
-    10430,     5215,      2608,      1304,     652,      326,      163,      81,
-    41,        20,        10,        5,        3,        1};
+constexpr uint32_t kAtanTable[30] = {536870912, 316933406, 167458907, 85004756, 42667331, 21354465,
+                                     10679838,  5340245,   2670163,   1335087,  667544,   333772,
+                                     166886,    83443,     41722,     20861,    10430,    5215,
+                                     2608,      1304,      652,       326,      163,      81,
+                                     41,        20,        10,        5,        3,        1};
 constexpr int kIterations = 30;
 
 // Product of 1/sqrt(1 + 2^-2i) over the 30 iterations, q2_30: 0.60725293500888 · 2^30.
@@ -24,8 +24,8 @@ angle_t angle_from_deg(q16_16 deg) {
 }
 
 q16_16 angle_to_deg(angle_t a) {
-    const int64_t s = a < kAngleHalfTurn ? static_cast<int64_t>(a)
-                                         : static_cast<int64_t>(a) - pow2(32);
+    const int64_t s =
+        a < kAngleHalfTurn ? static_cast<int64_t>(a) : static_cast<int64_t>(a) - pow2(32);
     return q16_16::from_raw(shr_round_half_away(s * 360, 16));
 }
 
@@ -43,8 +43,16 @@ angle_t atan2_angle(int32_t y, int32_t x) {
     // Normalise max(|X|, |Y|) into [2^28, 2^29): enough bits for precision, and the CORDIC
     // growth (×1.647, ×√2 at most) keeps every iterate below 2^31.
     int64_t m = X > abs64(Y) ? X : abs64(Y);
-    while (m >= pow2(29)) { X /= 2; Y /= 2; m /= 2; }
-    while (m < pow2(28)) { X *= 2; Y *= 2; m *= 2; }
+    while (m >= pow2(29)) {
+        X /= 2;
+        Y /= 2;
+        m /= 2;
+    }
+    while (m < pow2(28)) {
+        X *= 2;
+        Y *= 2;
+        m *= 2;
+    }
     int32_t xi = static_cast<int32_t>(X), yi = static_cast<int32_t>(Y);
     for (int i = 0; i < kIterations; ++i) {
         const int32_t dx = xi >> i, dy = yi >> i;

@@ -18,28 +18,44 @@ namespace qt {
 // are undefined, so they never appear: scaling up is done by multiplication.
 static_assert((-3 >> 1) == -2, "arithmetic right shift required");
 
-template <typename T> struct int_limits;
-template <> struct int_limits<int8_t>  { static constexpr int64_t lo = -128, hi = 127; };
-template <> struct int_limits<int16_t> { static constexpr int64_t lo = -32768, hi = 32767; };
-template <> struct int_limits<int32_t> {
+template <typename T>
+struct int_limits;
+template <>
+struct int_limits<int8_t> {
+    static constexpr int64_t lo = -128, hi = 127;
+};
+template <>
+struct int_limits<int16_t> {
+    static constexpr int64_t lo = -32768, hi = 32767;
+};
+template <>
+struct int_limits<int32_t> {
     static constexpr int64_t lo = -2147483647LL - 1, hi = 2147483647LL;
 };
-template <> struct int_limits<uint8_t>  { static constexpr int64_t lo = 0, hi = 255; };
-template <> struct int_limits<uint16_t> { static constexpr int64_t lo = 0, hi = 65535; };
+template <>
+struct int_limits<uint8_t> {
+    static constexpr int64_t lo = 0, hi = 255;
+};
+template <>
+struct int_limits<uint16_t> {
+    static constexpr int64_t lo = 0, hi = 65535;
+};
 
 // Clamp a 64-bit value into the range of T.
 template <typename T>
 constexpr T saturate(int64_t v) {
-    return v < int_limits<T>::lo ? static_cast<T>(int_limits<T>::lo)
-         : v > int_limits<T>::hi ? static_cast<T>(int_limits<T>::hi)
-                                 : static_cast<T>(v);
+    return v < int_limits<T>::lo   ? static_cast<T>(int_limits<T>::lo)
+           : v > int_limits<T>::hi ? static_cast<T>(int_limits<T>::hi)
+                                   : static_cast<T>(v);
 }
 
 // |v| for v > INT64_MIN.
 constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 
 // v clamped into [lo, hi], lo <= hi.
-constexpr int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : v > hi ? hi : v; }
+constexpr int64_t clamp64(int64_t v, int64_t lo, int64_t hi) {
+    return v < lo ? lo : v > hi ? hi : v;
+}
 
 // 2^n as a 64-bit integer, 0 <= n <= 62.
 constexpr int64_t pow2(int n) { return static_cast<int64_t>(1) << n; }
@@ -131,8 +147,8 @@ constexpr Fixed<F, R> neg_sat(Fixed<F, R> a) {
 template <typename To, int Fa, typename Ra, int Fb, typename Rb>
 constexpr To mul(Fixed<Fa, Ra> a, Fixed<Fb, Rb> b) {
     static_assert(Fa + Fb >= To::frac_bits, "mul cannot add fraction bits");
-    return To::from_raw(shr_round_half_away(static_cast<int64_t>(a.raw) * b.raw,
-                                            Fa + Fb - To::frac_bits));
+    return To::from_raw(
+        shr_round_half_away(static_cast<int64_t>(a.raw) * b.raw, Fa + Fb - To::frac_bits));
 }
 
 // a / b in the format To, rounded half away from zero, saturated; b == 0 saturates towards
@@ -140,8 +156,9 @@ constexpr To mul(Fixed<Fa, Ra> a, Fixed<Fb, Rb> b) {
 template <typename To, int Fa, typename Ra, int Fb, typename Rb>
 constexpr To div(Fixed<Fa, Ra> a, Fixed<Fb, Rb> b) {
     static_assert(To::frac_bits + Fb - Fa >= 0 && To::frac_bits + Fb - Fa <= 30, "div range");
-    return b.raw == 0 ? To::from_raw(a.raw > 0 ? int_limits<typename To::rep>::hi
-                                     : a.raw < 0 ? int_limits<typename To::rep>::lo : 0)
+    return b.raw == 0 ? To::from_raw(a.raw > 0   ? int_limits<typename To::rep>::hi
+                                     : a.raw < 0 ? int_limits<typename To::rep>::lo
+                                                 : 0)
                       : To::from_raw(div_round_half_away(
                             static_cast<int64_t>(a.raw) * pow2(To::frac_bits + Fb - Fa), b.raw));
 }

@@ -12,7 +12,7 @@ int64_t mul_shr_round(int64_t a, int64_t b, int n) {
     const uint64_t mask = 0xFFFFFFFFu;
     const uint64_t a0 = ua & mask, a1 = ua >> 32, b0 = ub & mask, b1 = ub >> 32;
     const uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;  // each < 2^64
-    const uint64_t mid = (p00 >> 32) + (p01 & mask) + (p10 & mask);           // < 3·2^32
+    const uint64_t mid = (p00 >> 32) + (p01 & mask) + (p10 & mask);             // < 3·2^32
     uint64_t lo = (mid << 32) | (p00 & mask);
     // hi < 2^64: the full product is < 2^126.
     uint64_t hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);

@@ -12,8 +12,8 @@ inline gradient_word word_at(const uint8_t* above, const uint8_t* center, const 
 
 }  // namespace
 
-void gradient_row(const uint8_t* above, const uint8_t* center, const uint8_t* below,
-                  uint16_t width, gradient_word* out) {
+void gradient_row(const uint8_t* above, const uint8_t* center, const uint8_t* below, uint16_t width,
+                  gradient_word* out) {
     const uint16_t last = static_cast<uint16_t>(width - 1u);
     if (width == 1) {
         out[0] = word_at(above, center, below, 0, 0, 0);

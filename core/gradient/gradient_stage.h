@@ -13,14 +13,14 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "gradient/gradient_word.h"
 #include "base/status.h"
+#include "gradient/gradient_word.h"
 
 namespace qt {
 
 // Gradient words of one row from the rows above, at and below it (w >= 1 pixels each).
-void gradient_row(const uint8_t* above, const uint8_t* center, const uint8_t* below,
-                  uint16_t width, gradient_word* out);
+void gradient_row(const uint8_t* above, const uint8_t* center, const uint8_t* below, uint16_t width,
+                  gradient_word* out);
 
 // Rows of gradient words, out[0 .. width).
 struct WordRowKernel {
@@ -68,7 +68,7 @@ public:
             return Status::bad_row_length;
         }
         const uint16_t y = next_row_;
-        uint8_t* slot_y = rows_[y & 1u];          // where row y is kept
+        uint8_t* slot_y = rows_[y & 1u];             // where row y is kept
         const uint8_t* prev = rows_[(y + 1u) & 1u];  // row y-1 (row 0 while y <= 1)
         if (y >= 1) {
             // Row y-1 has all its neighbours now: above is row y-2 (in slot_y, about to be

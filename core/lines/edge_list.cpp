@@ -88,7 +88,9 @@ uint32_t EdgeList::lower_bound(uint32_t key, uint32_t y) const {
 int32_t EdgeList::find(int32_t x, int32_t y) const {
     if (y < 0 || y >= static_cast<int32_t>(height_) || x < 0) return -1;
     const uint32_t i = lower_bound(static_cast<uint32_t>(x), static_cast<uint32_t>(y));
-    return i < row_start_[y + 1] && ep::x(points_[i]) == static_cast<uint32_t>(x) ? static_cast<int32_t>(i) : -1;
+    return i < row_start_[y + 1] && ep::x(points_[i]) == static_cast<uint32_t>(x)
+               ? static_cast<int32_t>(i)
+               : -1;
 }
 
 void EdgeList::span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const {

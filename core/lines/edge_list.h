@@ -63,8 +63,13 @@ constexpr edge_point with_state(edge_point p, uint32_t s) {
 // whatever the capacities. Fill it with begin_frame / begin_row / push, in raster order.
 class EdgeList {
 public:
-    EdgeList(edge_point* points, uint8_t* strength, uint16_t capacity, uint16_t* row_start, uint16_t max_rows)
-        : points_(points), strength_(strength), row_start_(row_start), capacity_(capacity), max_rows_(max_rows) {}
+    EdgeList(edge_point* points, uint8_t* strength, uint16_t capacity, uint16_t* row_start,
+             uint16_t max_rows)
+        : points_(points),
+          strength_(strength),
+          row_start_(row_start),
+          capacity_(capacity),
+          max_rows_(max_rows) {}
 
     // Empties the list for a frame of `height` rows; bad_size if height > max rows.
     Status begin_frame(uint16_t height);
@@ -108,7 +113,7 @@ private:
     uint16_t height_ = 0;
     uint16_t next_row_ = 0;  // rows below this have their start recorded
     uint16_t current_y_ = 0;
-    uint16_t floor_ = 0;   // magnitude, grey levels
+    uint16_t floor_ = 0;  // magnitude, grey levels
     uint32_t dropped_ = 0;
 };
 

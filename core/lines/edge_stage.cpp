@@ -78,12 +78,14 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
         for (; x + 4 <= last; x += 4) {
             const uint8x4_t left = load4(center + x - 1), right = load4(center + x + 1);
             const uint8x4_t up = load4(above + x), down = load4(below + x);
-            const uint8x4_t agx = __uqsub8(right, left) | __uqsub8(left, right);      // |gx|, 4 lanes
-            const uint8x4_t agy = __uqsub8(down, up) | __uqsub8(up, down);            // |gy|
-            const uint16x2_t even = __uadd16(__uxtb16(agx), __uxtb16(agy));           // pixels x, x + 2
-            const uint16x2_t odd = __uadd16(__uxtb16(agx >> 8), __uxtb16(agy >> 8));  // x + 1, x + 3
+            const uint8x4_t agx = __uqsub8(right, left) | __uqsub8(left, right);  // |gx|, 4 lanes
+            const uint8x4_t agy = __uqsub8(down, up) | __uqsub8(up, down);        // |gy|
+            const uint16x2_t even = __uadd16(__uxtb16(agx), __uxtb16(agy));       // pixels x, x + 2
+            const uint16x2_t odd =
+                __uadd16(__uxtb16(agx >> 8), __uxtb16(agy >> 8));  // x + 1, x + 3
             if ((__uqsub16(even, below_threshold) | __uqsub16(odd, below_threshold)) == 0) {
-                const uint32_t first = (even & 0xFFFFu) | (odd << 16), second = (even >> 16) | (odd & 0xFFFF0000u);
+                const uint32_t first = (even & 0xFFFFu) | (odd << 16),
+                               second = (even >> 16) | (odd & 0xFFFF0000u);
                 memcpy(row + x + 1, &first, sizeof first);
                 memcpy(row + x + 3, &second, sizeof second);
                 continue;
@@ -101,7 +103,8 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
     for (; x + kBlock <= last; x += kBlock) {
         uint16_t reached = 0;
         for (int32_t k = x; k < x + kBlock; ++k) {
-            const uint16_t m = magnitude(static_cast<int32_t>(center[k + 1]) - center[k - 1], gy_at(k));
+            const uint16_t m =
+                magnitude(static_cast<int32_t>(center[k + 1]) - center[k - 1], gy_at(k));
             row[k + 1] = m;
             reached |= static_cast<uint16_t>(m + bias);
         }
@@ -126,14 +129,42 @@ inline void nms_pixel(const uint16_t* a, const uint16_t* c, const uint16_t* b, u
     auto M = [](const uint16_t* r, uint32_t k) { return static_cast<uint32_t>(r[k] & 0x1FFu); };
     uint32_t ahead, behind, mm = 2 * m;  // odd axes compare 2m with a sum of two
     switch (dir & 7u) {  // ahead = along +gradient (y down), behind = along -gradient
-        case 0: ahead = M(c, i + 1); behind = M(c, i - 1); mm = m; break;
-        case 2: ahead = M(b, i + 1); behind = M(a, i - 1); mm = m; break;
-        case 4: ahead = M(b, i); behind = M(a, i); mm = m; break;
-        case 6: ahead = M(b, i - 1); behind = M(a, i + 1); mm = m; break;
-        case 1: ahead = M(c, i + 1) + M(b, i + 1); behind = M(c, i - 1) + M(a, i - 1); break;
-        case 3: ahead = M(b, i + 1) + M(b, i); behind = M(a, i - 1) + M(a, i); break;
-        case 5: ahead = M(b, i) + M(b, i - 1); behind = M(a, i) + M(a, i + 1); break;
-        default: ahead = M(b, i - 1) + M(c, i - 1); behind = M(a, i + 1) + M(c, i + 1); break;
+        case 0:
+            ahead = M(c, i + 1);
+            behind = M(c, i - 1);
+            mm = m;
+            break;
+        case 2:
+            ahead = M(b, i + 1);
+            behind = M(a, i - 1);
+            mm = m;
+            break;
+        case 4:
+            ahead = M(b, i);
+            behind = M(a, i);
+            mm = m;
+            break;
+        case 6:
+            ahead = M(b, i - 1);
+            behind = M(a, i + 1);
+            mm = m;
+            break;
+        case 1:
+            ahead = M(c, i + 1) + M(b, i + 1);
+            behind = M(c, i - 1) + M(a, i - 1);
+            break;
+        case 3:
+            ahead = M(b, i + 1) + M(b, i);
+            behind = M(a, i - 1) + M(a, i);
+            break;
+        case 5:
+            ahead = M(b, i) + M(b, i - 1);
+            behind = M(a, i) + M(a, i + 1);
+            break;
+        default:
+            ahead = M(b, i - 1) + M(c, i - 1);
+            behind = M(a, i + 1) + M(c, i + 1);
+            break;
     }
     // Bins 8..15 point the other way along the same axis: swap the roles so that the tie
     // rule follows the gradient, not the axis.
@@ -164,7 +195,8 @@ void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t w
     const uint16_t bias = threshold_bias(edge_threshold);
     for (; i + kBlock <= width + 1u; i += kBlock) {
         uint16_t reached = 0;
-        for (uint32_t k = i; k < i + kBlock; ++k) reached |= static_cast<uint16_t>((c[k] & 0x1FFu) + bias);
+        for (uint32_t k = i; k < i + kBlock; ++k)
+            reached |= static_cast<uint16_t>((c[k] & 0x1FFu) + bias);
         if ((reached & kReached) == 0) continue;
         for (uint32_t k = i; k < i + kBlock; ++k) nms_pixel(a, c, b, k, edge_threshold, out);
     }

@@ -20,14 +20,16 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "lines/edge_list.h"
-#include "gradient/gradient_word.h"
 #include "base/status.h"
+#include "gradient/gradient_word.h"
+#include "lines/edge_list.h"
 
 namespace qt {
 
 // One NMS entry: magnitude [8:0] and direction bin [12:9].
-constexpr uint16_t nms_entry(uint32_t mag, uint32_t dir) { return static_cast<uint16_t>(mag | (dir << 9)); }
+constexpr uint16_t nms_entry(uint32_t mag, uint32_t dir) {
+    return static_cast<uint16_t>(mag | (dir << 9));
+}
 
 // One row of the NMS window: magnitude [8:0] and direction bin [12:9] of each pixel, with a
 // zero at index 0 and at width + 1 so that x - 1 and x + 1 never leave the row.

@@ -17,13 +17,21 @@ class Ppht {
 public:
     Ppht(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& p,
          const HoughWorkspace& ws, HoughStats& stats)
-        : edges_(edges), p_(p), ws_(ws), stats_(stats), width_(width), height_(height),
-          cx_(width / 2), cy_(height / 2), rho_shift_(rho_shift_of(p.rho_step)),
+        : edges_(edges),
+          p_(p),
+          ws_(ws),
+          stats_(stats),
+          width_(width),
+          height_(height),
+          cx_(width / 2),
+          cy_(height / 2),
+          rho_shift_(rho_shift_of(p.rho_step)),
           rho_half_(static_cast<int32_t>(hough_rho_half_bins(width, height, p.rho_step))),
           n_rho_(static_cast<uint32_t>(2 * rho_half_ + 1)) {
         const uint32_t n = p.theta_bins;
-        window_ = p.vote_window_deg >= 90 ? -1
-                                          : static_cast<int32_t>((p.vote_window_deg * n + 179u) / 180u);
+        window_ = p.vote_window_deg >= 90
+                      ? -1
+                      : static_cast<int32_t>((p.vote_window_deg * n + 179u) / 180u);
         if (2 * window_ + 1 >= static_cast<int32_t>(n)) window_ = -1;  // the window covers all θ
         for (uint32_t t = 0; t < n; ++t) {
             // θ_t = t·180°/n as a binary angle: t·2^31/n.
@@ -65,7 +73,8 @@ public:
 private:
     // Squared length in (1/256 px)²: |dx|, |dy| < 2^12 px = 2^20 units, so the sum < 2^41.
     static int64_t length2(const Segment& s) {
-        int64_t dx = static_cast<int64_t>(s.x2.raw) - s.x1.raw, dy = static_cast<int64_t>(s.y2.raw) - s.y1.raw;
+        int64_t dx = static_cast<int64_t>(s.x2.raw) - s.x1.raw,
+                dy = static_cast<int64_t>(s.y2.raw) - s.y1.raw;
         dx = (dx < 0 ? -dx : dx) >> 8;
         dy = (dy < 0 ? -dy : dy) >> 8;
         return dx * dx + dy * dy;
@@ -84,7 +93,8 @@ private:
     // and that bin's index (θ index · rho bins + rho index).
     uint32_t vote(edge_point pt, int delta, uint32_t* best_bin) {
         const int32_t n = p_.theta_bins;
-        const int32_t x = static_cast<int32_t>(ep::x(pt)) - cx_, y = static_cast<int32_t>(ep::y(pt)) - cy_;
+        const int32_t x = static_cast<int32_t>(ep::x(pt)) - cx_,
+                      y = static_cast<int32_t>(ep::y(pt)) - cy_;
         int32_t first = 0, last = n - 1;
         if (window_ >= 0) {
             // Normal orientation of direction bin d: (d mod 8)·22.5°, as a θ index, rounded.
@@ -180,13 +190,15 @@ private:
             edges_.span(minor - corridor, minor + corridor, major, &first, &end);
             for (uint32_t i = first; i < end; ++i) {
                 const edge_point e = edges_[static_cast<uint16_t>(i)];
-                if (across(tr, e)) visit(static_cast<uint16_t>(i), static_cast<int32_t>(ep::x(e)) - minor);
+                if (across(tr, e))
+                    visit(static_cast<uint16_t>(i), static_cast<int32_t>(ep::x(e)) - minor);
             }
             return;
         }
         for (int32_t off = -corridor; off <= corridor; ++off) {
             const int32_t i = edges_.find(major, minor + off);
-            if (i >= 0 && across(tr, edges_[static_cast<uint16_t>(i)])) visit(static_cast<uint16_t>(i), off);
+            if (i >= 0 && across(tr, edges_[static_cast<uint16_t>(i)]))
+                visit(static_cast<uint16_t>(i), off);
         }
     }
 
@@ -198,7 +210,8 @@ private:
     // columns, and taking the one nearer a slightly wrong prediction pulls the fit further
     // that way (2° on a clean 42° edge).
     template <class Fresh>
-    int32_t corridor_points(const Track& tr, int32_t major, int32_t minor, Fresh&& fresh_point) const {
+    int32_t corridor_points(const Track& tr, int32_t major, int32_t minor,
+                            Fresh&& fresh_point) const {
         int32_t nearest = -1;
         uint32_t nearest_rank = ~0u;
         in_corridor(tr, major, minor, [&](uint16_t i, int32_t off) {
@@ -262,7 +275,8 @@ private:
         ++dir_count[ep::dir(sp)];
         int32_t end32[2][2] = {{sx32, sy32}, {sx32, sy32}};  // last hit each way: x32, y32
         const int32_t extent = tr.major_is_y ? height_ : width_;
-        const int32_t seed_major = major_of(tr, static_cast<int32_t>(ep::x(sp)), static_cast<int32_t>(ep::y(sp)));
+        const int32_t seed_major =
+            major_of(tr, static_cast<int32_t>(ep::x(sp)), static_cast<int32_t>(ep::y(sp)));
         int32_t last_major[2] = {seed_major, seed_major};  // of the last hit each way, pixels
         uint32_t refits = 0, refits_in_way0 = 0;
         // Way 0, way 1, then way 0 again: way 0 starts along the seed bin's direction, which
@@ -279,8 +293,9 @@ private:
             const int32_t step = way == 0 ? 1 : -1;
             int32_t gap = 0;
             int32_t run = 0, run_gap = 0;  // hits of the run not yet in the segment, its gap
-            int32_t run32[2] = {0, 0};      // that run's last hit, x32 and y32
-            for (int32_t major = last_major[way] + step; major >= 0 && major < extent; major += step) {
+            int32_t run32[2] = {0, 0};     // that run's last hit, x32 and y32
+            for (int32_t major = last_major[way] + step; major >= 0 && major < extent;
+                 major += step) {
                 if (!spend_step()) return false;
                 const int32_t i = corridor_points(tr, major, predict(tr, major), [&](uint16_t f) {
                     const edge_point fp = edges_[f];
@@ -320,14 +335,17 @@ private:
         }
         // Too few points, or a run too short along its major axis (the line is at most √5 times
         // longer, |slope| <= 2): rejected before the final fit.
-        const int32_t major_extent = (major_of(tr, end32[0][0], end32[0][1]) - major_of(tr, end32[1][0], end32[1][1])) / 32;
-        if (m.n < p_.threshold ||
-            (major_extent < 0 ? -major_extent : major_extent) * 9 < 4 * static_cast<int32_t>(p_.min_line_length))
+        const int32_t major_extent =
+            (major_of(tr, end32[0][0], end32[0][1]) - major_of(tr, end32[1][0], end32[1][1])) / 32;
+        if (m.n < p_.threshold || (major_extent < 0 ? -major_extent : major_extent) * 9 <
+                                      4 * static_cast<int32_t>(p_.min_line_length))
             return false;
         FittedLine line;
         const bool fitted = fit_line(m, sx32, sy32, line);
-        q16_16 t1 = along(line, q16_16::from_raw(int64_t{end32[1][0]} * 2048), q16_16::from_raw(int64_t{end32[1][1]} * 2048));
-        q16_16 t2 = along(line, q16_16::from_raw(int64_t{end32[0][0]} * 2048), q16_16::from_raw(int64_t{end32[0][1]} * 2048));
+        q16_16 t1 = along(line, q16_16::from_raw(int64_t{end32[1][0]} * 2048),
+                          q16_16::from_raw(int64_t{end32[1][1]} * 2048));
+        q16_16 t2 = along(line, q16_16::from_raw(int64_t{end32[0][0]} * 2048),
+                          q16_16::from_raw(int64_t{end32[0][1]} * 2048));
         if (t2 < t1) {
             const q16_16 tmp = t1;
             t1 = t2;
@@ -335,7 +353,8 @@ private:
         }
         // Long enough, and carried by enough points of its own: a run along points consumed by
         // an earlier segment with a few new ones is that segment again, not a new line.
-        if (static_cast<int64_t>(t2.raw) - t1.raw < static_cast<int64_t>(p_.min_line_length) << 16 ||
+        if (static_cast<int64_t>(t2.raw) - t1.raw < static_cast<int64_t>(p_.min_line_length)
+                                                        << 16 ||
             m.n < p_.threshold)
             return false;
 
@@ -377,8 +396,9 @@ Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const Ho
                       uint16_t* count, HoughStats* stats) {
     *count = 0;
     *stats = HoughStats{};
-    if (width == 0 || height == 0 || width > ep::kMaxCoordinate + 1 || height > ep::kMaxCoordinate + 1 ||
-        edges.height() != height || rho_shift_of(params.rho_step) < 0 || params.theta_bins < 2 ||
+    if (width == 0 || height == 0 || width > ep::kMaxCoordinate + 1 ||
+        height > ep::kMaxCoordinate + 1 || edges.height() != height ||
+        rho_shift_of(params.rho_step) < 0 || params.theta_bins < 2 ||
         params.theta_bins > ws.theta_capacity || params.threshold == 0 || params.threshold > 255 ||
         hough_bins_for(width, height, params.theta_bins, params.rho_step) > ws.bin_capacity)
         return Status::bad_size;

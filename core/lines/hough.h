@@ -13,10 +13,10 @@
 #pragma once
 #include <stdint.h>
 
-#include "lines/edge_list.h"
 #include "base/isqrt.h"
-#include "lines/segment.h"
 #include "base/status.h"
+#include "lines/edge_list.h"
+#include "lines/segment.h"
 
 namespace qt {
 
@@ -29,26 +29,26 @@ struct HoughParams {
     uint16_t vote_window_deg = 24;  // ± degrees around the gradient direction; 90 or more: all θ
     uint16_t corridor = 1;          // pixels either side of the line searched while following it
     uint32_t max_walk_steps = 200000;  // bound on line-following work per frame (steps)
-    uint64_t seed = 1;              // visiting order
+    uint64_t seed = 1;                 // visiting order
 };
 
 struct HoughStats {
-    uint32_t points_visited = 0;     // edge points that voted
-    uint32_t votes = 0;              // accumulator increments
-    uint32_t saturated_votes = 0;    // increments lost to a bin at 255
-    uint32_t lines_followed = 0;     // bins that reached the threshold
-    uint32_t walk_steps = 0;         // pixels stepped while following lines
-    uint16_t segments = 0;           // segments reported
-    uint16_t segments_dropped = 0;   // segments found with the output full: the shortest of
-                                     // those found and the new one is dropped
-    bool budget_exhausted = false;   // stopped at max_walk_steps: not every point was visited
+    uint32_t points_visited = 0;    // edge points that voted
+    uint32_t votes = 0;             // accumulator increments
+    uint32_t saturated_votes = 0;   // increments lost to a bin at 255
+    uint32_t lines_followed = 0;    // bins that reached the threshold
+    uint32_t walk_steps = 0;        // pixels stepped while following lines
+    uint16_t segments = 0;          // segments reported
+    uint16_t segments_dropped = 0;  // segments found with the output full: the shortest of
+                                    // those found and the new one is dropped
+    bool budget_exhausted = false;  // stopped at max_walk_steps: not every point was visited
 };
 
 // Working memory of PPHT, as a view (see HoughStorage for the owning type).
 struct HoughWorkspace {
-    uint8_t* bins;          // theta_bins × rho bins counters
+    uint8_t* bins;  // theta_bins × rho bins counters
     uint32_t bin_capacity;
-    int16_t* cos_q14;       // per θ bin, 1.0 = 2^14
+    int16_t* cos_q14;  // per θ bin, 1.0 = 2^14
     int16_t* sin_q14;
     uint16_t theta_capacity;
 };
@@ -62,7 +62,8 @@ constexpr uint32_t hough_rho_half_bins(uint32_t width, uint32_t height, uint32_t
 
 // Accumulator bins a frame needs: theta_bins × (2 · half + 1). Compile-time capacities
 // (line_detector.h) and the run-time check use this one formula.
-constexpr uint32_t hough_bins_for(uint32_t width, uint32_t height, uint32_t theta_bins, uint32_t rho_step) {
+constexpr uint32_t hough_bins_for(uint32_t width, uint32_t height, uint32_t theta_bins,
+                                  uint32_t rho_step) {
     return theta_bins * (2 * hough_rho_half_bins(width, height, rho_step) + 1);
 }
 
@@ -80,7 +81,9 @@ struct HoughStorage {
     uint8_t bins[BinCapacity] = {};
     int16_t cos_q14[MaxThetaBins] = {};
     int16_t sin_q14[MaxThetaBins] = {};
-    HoughWorkspace view() { return HoughWorkspace{bins, BinCapacity, cos_q14, sin_q14, MaxThetaBins}; }
+    HoughWorkspace view() {
+        return HoughWorkspace{bins, BinCapacity, cos_q14, sin_q14, MaxThetaBins};
+    }
 };
 
 }  // namespace qt

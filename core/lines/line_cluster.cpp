@@ -14,11 +14,14 @@ int32_t to32(q16_16 v) { return static_cast<int32_t>(shr_round_half_away(v.raw, 
 
 // Gap between b and a along a's direction, q16_16 pixels; 0 when they overlap.
 int64_t gap_along(const Segment& a, const Segment& b) {
-    const int64_t ux = static_cast<int64_t>(a.x2.raw) - a.x1.raw, uy = static_cast<int64_t>(a.y2.raw) - a.y1.raw;
+    const int64_t ux = static_cast<int64_t>(a.x2.raw) - a.x1.raw,
+                  uy = static_cast<int64_t>(a.y2.raw) - a.y1.raw;
     const int64_t len = isqrt64(static_cast<uint64_t>(ux * ux + uy * uy));  // q16_16
     if (len == 0) return 0;
     auto t = [&](q16_16 x, q16_16 y) {  // position along a from its first end, q16_16
-        return ((static_cast<int64_t>(x.raw) - a.x1.raw) * ux + (static_cast<int64_t>(y.raw) - a.y1.raw) * uy) / len;
+        return ((static_cast<int64_t>(x.raw) - a.x1.raw) * ux +
+                (static_cast<int64_t>(y.raw) - a.y1.raw) * uy) /
+               len;
     };
     const int64_t t1 = t(b.x1, b.y1), t2 = t(b.x2, b.y2);
     const int64_t lo = t1 < t2 ? t1 : t2, hi = t1 < t2 ? t2 : t1;
@@ -44,7 +47,8 @@ bool on_one_line(const Segment& a, const Segment& b, q16_16 offset) {
 }
 
 bool similar(const Segment& a, const Segment& b, const ClusterParams& p) {
-    const int64_t d2 = sq(static_cast<int64_t>(a.cx.raw) - b.cx.raw) + sq(static_cast<int64_t>(a.cy.raw) - b.cy.raw);
+    const int64_t d2 = sq(static_cast<int64_t>(a.cx.raw) - b.cx.raw) +
+                       sq(static_cast<int64_t>(a.cy.raw) - b.cy.raw);
     return d2 <= sq(p.distance.raw) && orientation_difference(a.theta, b.theta) <= p.max_angle &&
            gap_along(a, b) <= p.gap.raw && on_one_line(a, b, p.offset);
 }
@@ -101,12 +105,14 @@ Status cluster_segments(const Segment* in, uint16_t n, const ClusterParams& para
         }
         if (*count < capacity) {
             Segment& merged = out[(*count)++];
-            merged = make_segment(line, lo, hi, static_cast<uint16_t>(points > 65535 ? 65535 : points));
+            merged =
+                make_segment(line, lo, hi, static_cast<uint16_t>(points > 65535 ? 65535 : points));
             // The seed's polarity, turned with the normal when the refit flipped it (the
             // orientations agree within max_angle, so the normals are ~0° or ~180° apart).
             const angle_t turn = merged.theta - in[seed].theta;
             const bool flipped = turn > kAngleQuarterTurn && turn < 3u * kAngleQuarterTurn;
-            merged.bright_side = static_cast<int8_t>(flipped ? -in[seed].bright_side : in[seed].bright_side);
+            merged.bright_side =
+                static_cast<int8_t>(flipped ? -in[seed].bright_side : in[seed].bright_side);
             ++stats->clusters;
         } else {
             ++stats->clusters_dropped;
@@ -154,8 +160,10 @@ uint16_t join_corners(Segment* lines, uint16_t n, const CornerParams& params,
             if (d < params.min_angle) continue;
             q16_16 x, y;
             if (!intersect(lines[i], lines[j], x, y)) continue;
-            const int64_t di1 = dist2(x, y, lines[i].x1, lines[i].y1), di2 = dist2(x, y, lines[i].x2, lines[i].y2);
-            const int64_t dj1 = dist2(x, y, lines[j].x1, lines[j].y1), dj2 = dist2(x, y, lines[j].x2, lines[j].y2);
+            const int64_t di1 = dist2(x, y, lines[i].x1, lines[i].y1),
+                          di2 = dist2(x, y, lines[i].x2, lines[i].y2);
+            const int64_t dj1 = dist2(x, y, lines[j].x1, lines[j].y1),
+                          dj2 = dist2(x, y, lines[j].x2, lines[j].y2);
             const uint16_t ei = static_cast<uint16_t>(2 * i + (di2 < di1 ? 1 : 0));
             const uint16_t ej = static_cast<uint16_t>(2 * j + (dj2 < dj1 ? 1 : 0));
             const int64_t di = di2 < di1 ? di2 : di1, dj = dj2 < dj1 ? dj2 : dj1;

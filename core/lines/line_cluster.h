@@ -4,7 +4,8 @@
 // orientations are near: two different lines through (or near) the origin both have C ≈ (0, 0)
 // and the paper's measure alone would merge them. Near the origin C moves little with the
 // angle (|ΔC| ≈ rho·Δθ), so two parallel-ish sides of neighbouring shapes can pass both tests:
-// the shorter segment's ends must also lie near the longer one's line. Each cluster is refitted from all its
+// the shorter segment's ends must also lie near the longer one's line. Each cluster is refitted
+// from all its
 // members (total least squares over their points, each member standing for its points spread
 // evenly along it), not represented by its longest member.
 #pragma once
@@ -12,16 +13,16 @@
 
 #include "base/angle.h"
 #include "base/fixed.h"
-#include "lines/segment.h"
 #include "base/status.h"
+#include "lines/segment.h"
 
 namespace qt {
 
 struct ClusterParams {
     q16_16 distance = q16_16::from_int(6);  // |Ci − Cj| threshold, pixels
     angle_t max_angle = angle_from_deg(4);  // orientation difference (mod 180°) threshold
-    q16_16 gap = q16_16::from_int(16);      // largest gap between merged segments along the line, px
-    q16_16 offset = q16_16::from_int(3);    // ends of the shorter segment from the longer's line, px
+    q16_16 gap = q16_16::from_int(16);    // largest gap between merged segments along the line, px
+    q16_16 offset = q16_16::from_int(3);  // ends of the shorter segment from the longer's line, px
 };
 
 // Corners: where two lines' ends meet at a clear angle, both ends move to the lines'

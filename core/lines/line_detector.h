@@ -1,6 +1,7 @@
-// The lines stage of one frame, all memory inside, fixed at compile time: gradient (or words
-// from the FPGA) -> edges -> PPHT segments -> clustered lines, ends joined at corners. Camera rows go through the
-// gradient and NMS without forming gradient words (edge_stage.h: same edges, less work).
+// The lines stage of one frame, all memory inside, fixed at compile time: gradient (or words from
+// the FPGA) -> edges -> PPHT segments -> clustered lines, ends joined at corners. Camera rows go
+// through the gradient and NMS without forming gradient words (edge_stage.h: same edges, less
+// work).
 //
 //   static qt::LineDetectorQvga det;           // ~44 KiB, see ram_bytes()
 //   det.begin_frame(320, 240, params);
@@ -10,8 +11,8 @@
 #pragma once
 #include <stdint.h>
 
-#include "lines/edge_stage.h"
 #include "gradient/gradient_stage.h"
+#include "lines/edge_stage.h"
 #include "lines/hough.h"
 #include "lines/line_cluster.h"
 
@@ -29,8 +30,8 @@ struct LineParams {
 enum class FinishStage : uint8_t { hough, cluster, quads };
 
 struct LineStats {
-    uint32_t edges = 0;           // edge points kept
-    uint32_t edges_dropped = 0;   // edge points lost to the edge capacity
+    uint32_t edges = 0;          // edge points kept
+    uint32_t edges_dropped = 0;  // edge points lost to the edge capacity
     HoughStats hough;
     ClusterStats cluster;
 };
@@ -77,10 +78,11 @@ public:
         // after a frame of gradient words is a row after the last one too.
         if (!open_ || !edge_stage_.in_frame()) return Status::not_in_frame;
         Status edge_status = Status::ok;
-        const Status s = gradient_.push_row(pixels, length, [&](uint16_t, const uint16_t* packed, uint16_t n) {
-            const Status e = edge_stage_.push_packed_row(packed, n);
-            if (e != Status::ok) edge_status = e;
-        });
+        const Status s =
+            gradient_.push_row(pixels, length, [&](uint16_t, const uint16_t* packed, uint16_t n) {
+                const Status e = edge_stage_.push_packed_row(packed, n);
+                if (e != Status::ok) edge_status = e;
+            });
         return row_status(s != Status::ok ? s : edge_status);
     }
 
@@ -90,9 +92,10 @@ public:
         return row_status(edge_stage_.push_row(words, width));
     }
 
-    // After the last row: PPHT and clustering. not_in_frame if rows are missing, the frame
-    // was abandoned or already finished; capacity_exceeded when edges, segments or clusters were dropped or PPHT
-    // ran out of its walk budget (the lines found are valid; stats() says what was cut).
+    // After the last row: PPHT and clustering. not_in_frame if rows are missing, the frame was
+    // abandoned or already finished; capacity_exceeded when edges, segments or clusters were
+    // dropped or PPHT ran out of its walk budget (the lines found are valid; stats() says what was
+    // cut).
     Status finish() {
         return finish([](FinishStage) {});
     }
@@ -134,16 +137,23 @@ public:
         return true;
     }
     const EdgeList& edges() const { return edges_view_; }
-    uint16_t width() const { return width_; }    // of the frame begun last, pixels
+    uint16_t width() const { return width_; }  // of the frame begun last, pixels
     uint16_t height() const { return height_; }
 
     // RAM of the parts, bytes, for the README's table.
-    static constexpr uint32_t gradient_bytes() { return sizeof(GradientStage<MaxWidth, NmsRowKernel>); }
+    static constexpr uint32_t gradient_bytes() {
+        return sizeof(GradientStage<MaxWidth, NmsRowKernel>);
+    }
     static constexpr uint32_t edge_stage_bytes() { return sizeof(EdgeStage<MaxWidth>); }
-    static constexpr uint32_t edge_list_bytes() { return sizeof(EdgeListStorage<EdgeCapacity, MaxHeight>); }
-    static constexpr uint32_t accumulator_bytes() { return sizeof(HoughStorage<HoughBins, MaxThetaBins>); }
+    static constexpr uint32_t edge_list_bytes() {
+        return sizeof(EdgeListStorage<EdgeCapacity, MaxHeight>);
+    }
+    static constexpr uint32_t accumulator_bytes() {
+        return sizeof(HoughStorage<HoughBins, MaxThetaBins>);
+    }
     static constexpr uint32_t line_list_bytes() {
-        return sizeof(Segment) * (MaxSegments + MaxLines) + MaxSegments + sizeof(CornerCandidate) * 2 * MaxLines;
+        return sizeof(Segment) * (MaxSegments + MaxLines) + MaxSegments +
+               sizeof(CornerCandidate) * 2 * MaxLines;
     }
 
 private:

@@ -41,8 +41,10 @@ q16_16 along(const FittedLine& line, q16_16 px, q16_16 py) {
 Segment make_segment(const FittedLine& line, q16_16 t1, q16_16 t2, uint16_t points) {
     Segment s{};
     auto point_at = [&](q16_16 t, q16_16& x, q16_16& y) {
-        x = q16_16::from_raw(line.mx.raw + shr_round_half_away(static_cast<int64_t>(t.raw) * line.dx.raw, 30));
-        y = q16_16::from_raw(line.my.raw + shr_round_half_away(static_cast<int64_t>(t.raw) * line.dy.raw, 30));
+        x = q16_16::from_raw(line.mx.raw +
+                             shr_round_half_away(static_cast<int64_t>(t.raw) * line.dx.raw, 30));
+        y = q16_16::from_raw(line.my.raw +
+                             shr_round_half_away(static_cast<int64_t>(t.raw) * line.dy.raw, 30));
     };
     point_at(t1, s.x1, s.y1);
     point_at(t2, s.x2, s.y2);

@@ -23,7 +23,8 @@ struct BoardParams {
 
 template <class Lines, uint16_t PairCapacity, uint16_t MaxQuads>
 class BoardDetector {
-    static_assert(Lines::max_lines() > 4 * MaxQuads, "room for the completed sides beside the kept quadrangles' lines");
+    static_assert(Lines::max_lines() > 4 * MaxQuads,
+                  "room for the completed sides beside the kept quadrangles' lines");
 
 public:
     static constexpr uint32_t ram_bytes() { return sizeof(BoardDetector); }
@@ -39,7 +40,9 @@ public:
         quad_stats_ = QuadStats{};
         return lines_.begin_frame(width, height, params.lines);
     }
-    Status push_row(const uint8_t* pixels, uint16_t length) { return lines_.push_row(pixels, length); }
+    Status push_row(const uint8_t* pixels, uint16_t length) {
+        return lines_.push_row(pixels, length);
+    }
     Status push_gradient_row(const gradient_word* words, uint16_t width) {
         return lines_.push_gradient_row(words, width);
     }
@@ -55,24 +58,30 @@ public:
     Status finish(Mark&& mark) {
         const Status l = lines_.finish(mark);
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
-        const Status q = detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(), params_.quads, pairs_,
-                                      PairCapacity, normals_, quads_, MaxQuads, &quad_count_, &quad_stats_, completed_);
+        const Status q =
+            detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(),
+                         params_.quads, pairs_, PairCapacity, normals_, quads_, MaxQuads,
+                         &quad_count_, &quad_stats_, completed_);
         // Each candidate's sides refitted to the edge points between its corners and verified
         // by that evidence, which also becomes its score.
         uint16_t kept = 0;
         for (uint16_t k = 0; k < quad_count_; ++k) {
             Quad quad = quads_[k];
             bool seen = false;
-            for (uint16_t j = 0; j < kept && !seen; ++j) seen = same_corners(quads_[j], quad, params_.refine.duplicate_distance);
+            for (uint16_t j = 0; j < kept && !seen; ++j)
+                seen = same_corners(quads_[j], quad, params_.refine.duplicate_distance);
             if (seen) continue;
             const Segment* side_lines[4];
             for (int i = 0; i < 4; ++i)
-                side_lines[i] = quad.lines[i] == kCompletedSide ? &completed_[k] : &lines_.lines()[quad.lines[i]];
+                side_lines[i] = quad.lines[i] == kCompletedSide ? &completed_[k]
+                                                                : &lines_.lines()[quad.lines[i]];
             Segment sides[4];
             SideEvidence evidence;
             refine_quad(lines_.edges(), side_lines, params_.refine, quad, sides, &evidence);
             uint8_t completed = 0;
-            for (int i = 0; i < 4; ++i) completed = static_cast<uint8_t>(completed | ((quad.lines[i] == kCompletedSide) << i));
+            for (int i = 0; i < 4; ++i)
+                completed =
+                    static_cast<uint8_t>(completed | ((quad.lines[i] == kCompletedSide) << i));
             if (!verify_evidence(evidence, completed, params_.refine, &quad.score)) {
                 ++quad_stats_.rejected_evidence;
                 continue;
@@ -80,7 +89,8 @@ public:
             // Two candidates that refit to one quadrangle (corners within collinear_distance)
             // are one: the better scored stays.
             uint16_t dup = 0;
-            while (dup < kept && !same_corners(quads_[dup], quad, params_.quads.collinear_distance)) ++dup;
+            while (dup < kept && !same_corners(quads_[dup], quad, params_.quads.collinear_distance))
+                ++dup;
             if (dup < kept) {
                 if (quads_[dup].score >= quad.score) continue;
                 for (uint16_t j = dup; j + 1u < kept; ++j) {
@@ -124,7 +134,8 @@ private:
                 if (!lines_.append_line(sides_[k][i])) {
                     while (slot-- > 0 && used(slot)) {
                     }
-                    lines_.replace_line(slot, sides_[k][i]);  // slot < line_count: some line is unused
+                    lines_.replace_line(slot,
+                                        sides_[k][i]);  // slot < line_count: some line is unused
                 }
                 quads_[k].lines[i] = static_cast<uint8_t>(slot);
             }
@@ -142,7 +153,9 @@ private:
         for (int i = 0; i < 4; ++i) {
             const int64_t dx = static_cast<int64_t>(a.corners[i].x.raw) - b.corners[i].x.raw;
             const int64_t dy = static_cast<int64_t>(a.corners[i].y.raw) - b.corners[i].y.raw;
-            if (dx > tolerance.raw || dx < -tolerance.raw || dy > tolerance.raw || dy < -tolerance.raw) return false;
+            if (dx > tolerance.raw || dx < -tolerance.raw || dy > tolerance.raw ||
+                dy < -tolerance.raw)
+                return false;
         }
         return true;
     }
@@ -151,7 +164,7 @@ private:
     LinePair pairs_[PairCapacity] = {};
     SinCos normals_[Lines::max_lines()] = {};
     Quad quads_[MaxQuads] = {};
-    Segment sides_[MaxQuads][4] = {};  // each kept quadrangle's refitted sides
+    Segment sides_[MaxQuads][4] = {};   // each kept quadrangle's refitted sides
     Segment completed_[MaxQuads] = {};  // detect_quads' completed sides
     BoardParams params_;
     QuadStats quad_stats_;

@@ -23,7 +23,8 @@ bool display_homography(const Point16 corners[4], uint16_t display_width, uint16
     // g = gn / den and h = hn / den in q2_30 (unit square): scale all three down together
     // until each is below 2^31 so that gn·2^30 fits in 64 bits; den keeps >= 2^22 significant
     // bits unless the quadrangle is tiny, which the rules exclude.
-    while (abs64(den) >= (int64_t{1} << 31) || abs64(gn) >= (int64_t{1} << 31) || abs64(hn) >= (int64_t{1} << 31)) {
+    while (abs64(den) >= (int64_t{1} << 31) || abs64(gn) >= (int64_t{1} << 31) ||
+           abs64(hn) >= (int64_t{1} << 31)) {
         den = shr_round_half_away(den, 1);
         gn = shr_round_half_away(gn, 1);
         hn = shr_round_half_away(hn, 1);
@@ -62,14 +63,17 @@ bool map_display_point(const DisplayHomography& m, q16_16 u, q16_16 v, Point16& 
     // stays below 2^59.
     const int64_t max_uv = int64_t{4096} * q16_16::one_raw;
     if (abs64(u.raw) > max_uv || abs64(v.raw) > max_uv) return false;
-    const int64_t w46 = static_cast<int64_t>(m.g.raw) * u.raw + static_cast<int64_t>(m.h.raw) * v.raw + pow2(46);
+    const int64_t w46 =
+        static_cast<int64_t>(m.g.raw) * u.raw + static_cast<int64_t>(m.h.raw) * v.raw + pow2(46);
     const int64_t w30 = shr_round_half_away(w46, 16);
     if (w30 <= (int64_t{1} << 10)) return false;  // w <= 2^-20
     // x·w in q28_36: a (q12_20) · u (q16_16) + c (q16_16) · 2^20; |x·w| < 2^47 for sane
     // inputs, so the · 2^10 below stays under 2^57.
-    const int64_t xw = static_cast<int64_t>(m.a.raw) * u.raw + static_cast<int64_t>(m.b.raw) * v.raw +
+    const int64_t xw = static_cast<int64_t>(m.a.raw) * u.raw +
+                       static_cast<int64_t>(m.b.raw) * v.raw +
                        static_cast<int64_t>(m.c.raw) * pow2(20);
-    const int64_t yw = static_cast<int64_t>(m.d.raw) * u.raw + static_cast<int64_t>(m.e.raw) * v.raw +
+    const int64_t yw = static_cast<int64_t>(m.d.raw) * u.raw +
+                       static_cast<int64_t>(m.e.raw) * v.raw +
                        static_cast<int64_t>(m.f.raw) * pow2(20);
     if (abs64(xw) >= pow2(52) || abs64(yw) >= pow2(52)) return false;
     out.x = q16_16::from_raw(div_round_half_away(xw * pow2(10), w30));  // 2^-36 · 2^10 / 2^-30

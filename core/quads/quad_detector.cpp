@@ -22,8 +22,8 @@ int64_t perimeter(const Quad& q) {
 // Length of side a -> b (on line `on`, normal `nl`) covered by the lines lying along it: `on`
 // itself when it is one of them (index `on_index`), and every line with both ends within
 // collinear_distance of it; at most the side's length.
-int64_t side_support(Point16 a, Point16 b, const Segment& l, SinCos nl, const Segment* lines, uint16_t n,
-                     uint8_t on_index, int64_t side_length, const QuadParams& p) {
+int64_t side_support(Point16 a, Point16 b, const Segment& l, SinCos nl, const Segment* lines,
+                     uint16_t n, uint8_t on_index, int64_t side_length, const QuadParams& p) {
     auto off_line = [&](q16_16 x, q16_16 y) {  // pixels, q16_16
         const int64_t d = signed_distance(l, nl, x.raw, y.raw);
         return d < 0 ? -d : d;
@@ -31,7 +31,8 @@ int64_t side_support(Point16 a, Point16 b, const Segment& l, SinCos nl, const Se
     int64_t covered = 0;
     for (uint16_t j = 0; j < n; ++j) {
         const Segment& s = lines[j];
-        if (j != on_index && (off_line(s.x1, s.y1) > p.collinear_distance.raw || off_line(s.x2, s.y2) > p.collinear_distance.raw))
+        if (j != on_index && (off_line(s.x1, s.y1) > p.collinear_distance.raw ||
+                              off_line(s.x2, s.y2) > p.collinear_distance.raw))
             continue;
         covered += side_overlap(a, b, s).raw;
     }
@@ -43,7 +44,8 @@ bool same_quad(const Quad& a, const Quad& b, q16_16 tolerance) {
     for (int i = 0; i < 4; ++i) {
         const int64_t dx = static_cast<int64_t>(a.corners[i].x.raw) - b.corners[i].x.raw;
         const int64_t dy = static_cast<int64_t>(a.corners[i].y.raw) - b.corners[i].y.raw;
-        if (dx > tolerance.raw || dx < -tolerance.raw || dy > tolerance.raw || dy < -tolerance.raw) return false;
+        if (dx > tolerance.raw || dx < -tolerance.raw || dy > tolerance.raw || dy < -tolerance.raw)
+            return false;
     }
     return true;
 }
@@ -80,7 +82,9 @@ bool build_candidate(const Sides& sides, Quad& out, uint8_t order[4]) {
     Point16 c[4];
     for (int i = 0; i < 4; ++i) {
         const int before = (i + 3) & 3;
-        if (!intersect_lines(*sides.line[before], sides.normal[before], *sides.line[i], sides.normal[i], c[i])) return false;
+        if (!intersect_lines(*sides.line[before], sides.normal[before], *sides.line[i],
+                             sides.normal[i], c[i]))
+            return false;
     }
     if (!is_convex(c)) return false;
 
@@ -109,7 +113,8 @@ bool build_candidate(const Sides& sides, Quad& out, uint8_t order[4]) {
 
 // The side from p to q as a line (q16_16 pixels; p != q): its normal, rho and C, no points.
 Segment line_through(Point16 p, Point16 q) {
-    const int64_t ux = static_cast<int64_t>(q.x.raw) - p.x.raw, uy = static_cast<int64_t>(q.y.raw) - p.y.raw;
+    const int64_t ux = static_cast<int64_t>(q.x.raw) - p.x.raw,
+                  uy = static_cast<int64_t>(q.y.raw) - p.y.raw;
     const int64_t len = distance(p, q).raw;
     FittedLine l;
     l.mx = q16_16::from_raw(static_cast<int32_t>((static_cast<int64_t>(p.x.raw) + q.x.raw) / 2));
@@ -124,7 +129,8 @@ Segment line_through(Point16 p, Point16 q) {
 
 // The end of segment s farther from line l (normal n) and its distance, q16_16 raw.
 Point16 far_end(const Segment& s, const Segment& l, SinCos n, int64_t* d) {
-    const int64_t d1 = signed_distance(l, n, s.x1.raw, s.y1.raw), d2 = signed_distance(l, n, s.x2.raw, s.y2.raw);
+    const int64_t d1 = signed_distance(l, n, s.x1.raw, s.y1.raw),
+                  d2 = signed_distance(l, n, s.x2.raw, s.y2.raw);
     const int64_t a1 = d1 < 0 ? -d1 : d1, a2 = d2 < 0 ? -d2 : d2;
     *d = a1 > a2 ? d1 : d2;
     return a1 > a2 ? Point16{s.x1, s.y1} : Point16{s.x2, s.y2};
@@ -135,10 +141,19 @@ Point16 far_end(const Segment& s, const Segment& l, SinCos n, int64_t* d) {
 // insertion into out[0 .. *count) (completed sides move with their quadrangles).
 class Candidates {
 public:
-    Candidates(const Segment* lines, uint16_t n, uint16_t width, uint16_t height, const QuadParams& p, Quad* out,
-               Segment* completed, uint16_t capacity, uint16_t* count, QuadStats* stats)
-        : lines_(lines), n_(n), width_(width), height_(height), p_(p), out_(out), completed_(completed),
-          capacity_(capacity), count_(count), stats_(stats) {}
+    Candidates(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
+               const QuadParams& p, Quad* out, Segment* completed, uint16_t capacity,
+               uint16_t* count, QuadStats* stats)
+        : lines_(lines),
+          n_(n),
+          width_(width),
+          height_(height),
+          p_(p),
+          out_(out),
+          completed_(completed),
+          capacity_(capacity),
+          count_(count),
+          stats_(stats) {}
 
     void consider(const Sides& sides) {
         Quad cand;
@@ -164,7 +179,8 @@ public:
             return;
         }
         q16_16 lengths[4];
-        for (int k = 0; k < 4; ++k) lengths[k] = distance(cand.corners[k], cand.corners[(k + 1) & 3]);
+        for (int k = 0; k < 4; ++k)
+            lengths[k] = distance(cand.corners[k], cand.corners[(k + 1) & 3]);
         if (!rule_side_lengths(lengths, p_)) {
             ++stats_->rejected_sides;
             return;
@@ -179,9 +195,11 @@ public:
         int64_t covered = 0, perim = 0;
         bool supported = true;
         for (int k = 0; k < 4; ++k) {
-            const int64_t o = side_support(cand.corners[k], cand.corners[(k + 1) & 3], *side_lines[k], side_normals[k],
-                                           lines_, n_, cand.lines[k], lengths[k].raw, p_);
-            if (k != completed_side && o * 65536 < static_cast<int64_t>(lengths[k].raw) * p_.min_side_coverage.raw)
+            const int64_t o =
+                side_support(cand.corners[k], cand.corners[(k + 1) & 3], *side_lines[k],
+                             side_normals[k], lines_, n_, cand.lines[k], lengths[k].raw, p_);
+            if (k != completed_side &&
+                o * 65536 < static_cast<int64_t>(lengths[k].raw) * p_.min_side_coverage.raw)
                 supported = false;
             covered += o;
             perim += lengths[k].raw;
@@ -208,7 +226,8 @@ private:
             for (uint16_t k = dup; k + 1u < count; ++k) move(k + 1, k);
             --count;
         }
-        if (count == capacity_ && !ranks_before(cand, perim, out_[capacity_ - 1], perimeter(out_[capacity_ - 1])))
+        if (count == capacity_ &&
+            !ranks_before(cand, perim, out_[capacity_ - 1], perimeter(out_[capacity_ - 1])))
             return;
         uint16_t at = count < capacity_ ? count : static_cast<uint16_t>(capacity_ - 1);
         while (at > 0 && ranks_before(cand, perim, out_[at - 1], perimeter(out_[at - 1]))) {
@@ -259,8 +278,9 @@ bool perpendicular_to_pair(const Segment* lines, uint8_t c, LinePair p, const Qu
 }  // namespace
 
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity, SinCos* normals, Quad* out,
-                    uint16_t capacity, uint16_t* count, QuadStats* stats, Segment* completed) {
+                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity,
+                    SinCos* normals, Quad* out, uint16_t capacity, uint16_t* count,
+                    QuadStats* stats, Segment* completed) {
     *count = 0;
     *stats = QuadStats{};
     if (n >= kCompletedSide || width == 0 || height == 0) return Status::bad_size;
@@ -283,7 +303,9 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
         for (uint16_t i = 0; i < j; ++i) {
             if (!rule_parallel(lines[i].theta, lines[j].theta, rules)) continue;
             const int64_t sep = separation(lines[i], normals[i], lines[j]);
-            if (sep < min_sep || sep > max_sep || !facing(lines[i], normals[i], lines[j], normals[j], rules)) continue;
+            if (sep < min_sep || sep > max_sep ||
+                !facing(lines[i], normals[i], lines[j], normals[j], rules))
+                continue;
             if (npairs == pair_capacity) {
                 ++stats->pairs_dropped;
                 continue;
@@ -304,7 +326,8 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             const LinePair p = pairs[i], q = pairs[j];
             if (p.a == q.a || p.a == q.b || p.b == q.a || p.b == q.b) continue;
             ++stats->combinations;
-            if (!perpendicular_to_pair(lines, q.a, p, rules) || !perpendicular_to_pair(lines, q.b, p, rules)) {
+            if (!perpendicular_to_pair(lines, q.a, p, rules) ||
+                !perpendicular_to_pair(lines, q.b, p, rules)) {
                 ++stats->rejected_perpendicular;
                 continue;
             }
@@ -339,7 +362,9 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
     for (uint16_t i = 0; i < npairs; ++i) {
         const LinePair p = pairs[i];
         for (uint16_t c = 0; c < n; ++c) {
-            if (c == p.a || c == p.b || !perpendicular_to_pair(lines, static_cast<uint8_t>(c), p, rules)) continue;
+            if (c == p.a || c == p.b ||
+                !perpendicular_to_pair(lines, static_cast<uint8_t>(c), p, rules))
+                continue;
             ++stats->completions;
             int64_t da = 0, db = 0;
             const Point16 fa = far_end(lines[p.a], lines[c], normals[c], &da);
@@ -347,21 +372,27 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             // Both legs on one side of c, long enough for rule 4, and c's bright (or dark)
             // side towards them: cheap tests before the fourth side is built.
             const int64_t min_leg = rules.min_side_length.raw;
-            if ((da < 0) != (db < 0) || (da < 0 ? -da : da) < min_leg || (db < 0 ? -db : db) < min_leg) continue;
+            if ((da < 0) != (db < 0) || (da < 0 ? -da : da) < min_leg ||
+                (db < 0 ? -db : db) < min_leg)
+                continue;
             if (rules.contrast != Contrast::any && lines[c].bright_side != 0 &&
-                ((da > 0) != (lines[c].bright_side > 0)) != (rules.contrast == Contrast::dark_board))
+                ((da > 0) != (lines[c].bright_side > 0)) !=
+                    (rules.contrast == Contrast::dark_board))
                 continue;
             if (distance(fa, fb).raw < min_leg) continue;
             Segment hidden = line_through(fa, fb);
             if (!rule_parallel(hidden.theta, lines[c].theta, rules)) continue;
             // Its polarity: the board's inside (c's side of it) bright or dark as asked.
             const SinCos nh = sin_cos(hidden.theta);
-            const bool c_on_plus = signed_distance(hidden, nh, (static_cast<int64_t>(lines[c].x1.raw) + lines[c].x2.raw) / 2,
-                                                   (static_cast<int64_t>(lines[c].y1.raw) + lines[c].y2.raw) / 2) > 0;
+            const bool c_on_plus =
+                signed_distance(hidden, nh,
+                                (static_cast<int64_t>(lines[c].x1.raw) + lines[c].x2.raw) / 2,
+                                (static_cast<int64_t>(lines[c].y1.raw) + lines[c].y2.raw) / 2) > 0;
             const int8_t inside = c_on_plus ? int8_t{1} : int8_t{-1};
             hidden.bright_side = rules.contrast == Contrast::bright_board ? inside
-                                 : rules.contrast == Contrast::dark_board ? static_cast<int8_t>(-inside)
-                                                                               : int8_t{0};
+                                 : rules.contrast == Contrast::dark_board
+                                     ? static_cast<int8_t>(-inside)
+                                     : int8_t{0};
             Sides s;
             side(s, 0, static_cast<uint8_t>(c));
             side(s, 1, p.b);

@@ -13,9 +13,9 @@
 #pragma once
 #include <stdint.h>
 
-#include "quads/quad_rules.h"
-#include "lines/segment.h"
 #include "base/status.h"
+#include "lines/segment.h"
+#include "quads/quad_rules.h"
 
 namespace qt {
 
@@ -31,22 +31,22 @@ constexpr uint8_t kCompletedSide = 255;
 
 // Why candidates were turned down, for tuning the tolerances on real footage.
 struct QuadStats {
-    uint16_t parallel_pairs = 0;   // pairs passing rule 1 and the rule-4 separation test
-    uint16_t pairs_dropped = 0;    // pairs found with the pair capacity full
-    uint32_t combinations = 0;     // pair combinations tried
-    uint32_t completions = 0;      // (parallel pair, third line) completions tried
+    uint16_t parallel_pairs = 0;          // pairs passing rule 1 and the rule-4 separation test
+    uint16_t pairs_dropped = 0;           // pairs found with the pair capacity full
+    uint32_t combinations = 0;            // pair combinations tried
+    uint32_t completions = 0;             // (parallel pair, third line) completions tried
     uint32_t rejected_perpendicular = 0;  // rule 2
-    uint32_t rejected_shape = 0;    // no four corners, or not convex
-    uint32_t rejected_contrast = 0; // a side's polarity disagrees with QuadParams::contrast
-    uint32_t rejected_inside = 0;   // rule 3
-    uint32_t rejected_sides = 0;    // rule 4
-    uint32_t rejected_aspect = 0;   // rule 5
-    uint32_t rejected_support = 0;  // a side covered less than min_side_coverage, or the
-                                    // perimeter less than min_score
-    uint32_t accepted = 0;          // candidates passing every rule
-    uint16_t quads = 0;             // written to the output (the best `capacity` of them)
-    uint16_t rejected_evidence = 0; // of those, turned down by the edge evidence along their
-                                    // sides (board_detector.h, quad_refine.h)
+    uint32_t rejected_shape = 0;          // no four corners, or not convex
+    uint32_t rejected_contrast = 0;       // a side's polarity disagrees with QuadParams::contrast
+    uint32_t rejected_inside = 0;         // rule 3
+    uint32_t rejected_sides = 0;          // rule 4
+    uint32_t rejected_aspect = 0;         // rule 5
+    uint32_t rejected_support = 0;        // a side covered less than min_side_coverage, or the
+                                          // perimeter less than min_score
+    uint32_t accepted = 0;                // candidates passing every rule
+    uint16_t quads = 0;                   // written to the output (the best `capacity` of them)
+    uint16_t rejected_evidence = 0;       // of those, turned down by the edge evidence along their
+                                          // sides (board_detector.h, quad_refine.h)
 };
 
 // One parallel pair: two line indices.
@@ -55,10 +55,10 @@ struct LinePair {
 };
 
 // Finds quadrangles among lines[0 .. n) (n <= 254) in a width × height frame. Writes the best
-// `capacity` distinct candidates (two whose corners all lie within collinear_distance of each
-// other are one quadrangle, reported once), highest score first (ties: larger perimeter first, then lower line
-// indices), to out[0 .. *count). `pairs` is scratch for pair_capacity parallel pairs, `normals`
-// for n line normals.
+// `capacity` distinct candidates (two whose corners all lie within collinear_distance of each other
+// are one quadrangle, reported once), highest score first (ties: larger perimeter first, then lower
+// line indices), to out[0 .. *count). `pairs` is scratch for pair_capacity parallel pairs,
+// `normals` for n line normals.
 //
 // With `completed` (room for `capacity` lines) and params.complete_hidden_side, a quadrangle
 // may also have one side that no line gives, hidden along most of its length (an arm across
@@ -69,7 +69,8 @@ struct LinePair {
 // Returns bad_size for n > 254 or a zero frame size, capacity_exceeded when parallel pairs
 // were dropped (the quads found are still valid and written), ok otherwise.
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity, SinCos* normals, Quad* out,
-                    uint16_t capacity, uint16_t* count, QuadStats* stats, Segment* completed = nullptr);
+                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity,
+                    SinCos* normals, Quad* out, uint16_t capacity, uint16_t* count,
+                    QuadStats* stats, Segment* completed = nullptr);
 
 }  // namespace qt

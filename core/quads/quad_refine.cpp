@@ -16,7 +16,9 @@ struct Walk {
     int32_t t0, t1;
 };
 
-int32_t to32(q16_16 v) { return static_cast<int32_t>(shr_round_half_away(v.raw, 11)); }  // q16.16 -> 1/32 px
+int32_t to32(q16_16 v) {
+    return static_cast<int32_t>(shr_round_half_away(v.raw, 11));
+}  // q16.16 -> 1/32 px
 
 int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 
@@ -33,7 +35,8 @@ Polarity polarity_of(const Segment& line) {
     const SinCos n = sin_cos(line.theta);
     const int32_t sign = line.bright_side < 0 ? -1 : 1;
     // q2_30 -> ±2^16: direction_bin needs (lo << 8) to fit 32 bits.
-    return {direction_bin(sign * (n.cos.raw >> 14), sign * (n.sin.raw >> 14)), line.bright_side != 0};
+    return {direction_bin(sign * (n.cos.raw >> 14), sign * (n.sin.raw >> 14)),
+            line.bright_side != 0};
 }
 
 bool along_side(uint32_t dir, Polarity p) {
@@ -50,8 +53,8 @@ bool along_side(uint32_t dir, Polarity p) {
 // returns the major-axis steps (pixel columns of a side nearer horizontal, rows otherwise)
 // that held at least one such point and sets *steps to the steps the stretch spans. The edge
 // list is searched a row at a time (one search per row, not per pixel).
-uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity pol, Moments& m, uint32_t* steps,
-                uint8_t* ends) {
+uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity pol, Moments& m,
+                uint32_t* steps, uint8_t* ends) {
     const bool major_is_y = abs32(w.uy) > abs32(w.ux);
     const int64_t u_major = major_is_y ? w.uy : w.ux, u_minor = major_is_y ? w.ux : w.uy;
     const int32_t o_major = major_is_y ? w.oy32 : w.ox32, o_minor = major_is_y ? w.ox32 : w.oy32;
@@ -70,15 +73,21 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
     *ends = 0;
     if (*steps == 0) return 0;
     // Minor-axis half window: band / |u_major| (|u_major| >= 1/√2), whole pixels, plus one.
-    const int32_t reach = static_cast<int32_t>(((static_cast<int64_t>(band32) << 30) / (u_major < 0 ? -u_major : u_major)) >> 5) + 1;
+    const int32_t reach =
+        static_cast<int32_t>(
+            ((static_cast<int64_t>(band32) << 30) / (u_major < 0 ? -u_major : u_major)) >> 5) +
+        1;
     // Slopes in q16.16, one division each (a 64-bit division is a library call on Cortex-M):
     // minor per major (|.| <= 1) and major per minor (0 when the line runs along a row or
     // column within 2^-14, where every column of the stretch is searched).
     const int64_t slope = (u_minor << 16) / u_major;
-    const int64_t inverse = (u_minor < 0 ? -u_minor : u_minor) >= (int64_t{1} << 16) ? (u_major << 16) / u_minor : 0;
-    auto minor_at = [&](int32_t major) {  // the line's minor coordinate at a major one, whole pixels
-        return static_cast<int32_t>((o_minor + ((static_cast<int64_t>(major * 32 - o_major) * slope) >> 16) + 16) >> 5);
-    };
+    const int64_t inverse =
+        (u_minor < 0 ? -u_minor : u_minor) >= (int64_t{1} << 16) ? (u_major << 16) / u_minor : 0;
+    auto minor_at =
+        [&](int32_t major) {  // the line's minor coordinate at a major one, whole pixels
+            return static_cast<int32_t>(
+                (o_minor + ((static_cast<int64_t>(major * 32 - o_major) * slope) >> 16) + 16) >> 5);
+        };
     uint32_t marks[kMaxSteps / 32] = {};  // bit k: step first + k holds a point
     auto consider = [&](uint32_t i, int32_t major) {
         const edge_point p = edges[static_cast<uint16_t>(i)];
@@ -104,15 +113,19 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
         for (int32_t y = lo; y <= hi; ++y) {
             int32_t x_lo = first, x_hi = last;
             if (inverse != 0) {
-                const int64_t xa = o_major + ((static_cast<int64_t>((y - reach) * 32 - o_minor) * inverse) >> 16);
-                const int64_t xb = o_major + ((static_cast<int64_t>((y + reach) * 32 - o_minor) * inverse) >> 16);
-                const int64_t l = ((xa < xb ? xa : xb) >> 5) - 1, h = ((xa < xb ? xb : xa) >> 5) + 1;
+                const int64_t xa =
+                    o_major + ((static_cast<int64_t>((y - reach) * 32 - o_minor) * inverse) >> 16);
+                const int64_t xb =
+                    o_major + ((static_cast<int64_t>((y + reach) * 32 - o_minor) * inverse) >> 16);
+                const int64_t l = ((xa < xb ? xa : xb) >> 5) - 1,
+                              h = ((xa < xb ? xb : xa) >> 5) + 1;
                 x_lo = l > first ? static_cast<int32_t>(l) : first;
                 x_hi = h < last ? static_cast<int32_t>(h) : last;
             }
             if (x_lo > x_hi) continue;
             edges.span(x_lo, x_hi, y, &a, &b);
-            for (uint32_t i = a; i < b; ++i) consider(i, static_cast<int32_t>(ep::x(edges[static_cast<uint16_t>(i)])));
+            for (uint32_t i = a; i < b; ++i)
+                consider(i, static_cast<int32_t>(ep::x(edges[static_cast<uint16_t>(i)])));
         }
     }
     uint32_t held = 0;
@@ -124,21 +137,28 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
         if (*steps - 1 - k < quarter) *ends |= 2u;
     }
     // The walk may run either way along the side: bit 0 is the end at the walk's origin.
-    if ((major_is_y ? w.uy : w.ux) < 0) *ends = static_cast<uint8_t>(((*ends & 1u) << 1) | (*ends >> 1));
+    if ((major_is_y ? w.uy : w.ux) < 0)
+        *ends = static_cast<uint8_t>(((*ends & 1u) << 1) | (*ends >> 1));
     return held;
 }
 
 // One side: the walk between corners a and b, then around the first fit. False (line left
 // alone) when too few steps hold a point. *held and *steps: the evidence of the last walk.
-bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b, const RefineParams& p,
-                Segment& out, uint32_t* held, uint32_t* steps, uint8_t* ends) {
+bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b,
+                const RefineParams& p, Segment& out, uint32_t* held, uint32_t* steps,
+                uint8_t* ends) {
     *held = *steps = 0;
     *ends = 0;
     const int64_t len = distance(a, b).raw;  // q16_16
-    const int32_t margin32 = to32(p.end_margin), len32 = static_cast<int32_t>(shr_round_half_away(len, 11));
+    const int32_t margin32 = to32(p.end_margin),
+                  len32 = static_cast<int32_t>(shr_round_half_away(len, 11));
     if (len <= 0 || len32 <= 2 * margin32 + 64) return false;
-    Walk w{to32(a.x), to32(a.y), static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) << 30) / len),
-           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) << 30) / len), margin32, len32 - margin32};
+    Walk w{to32(a.x),
+           to32(a.y),
+           static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) << 30) / len),
+           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) << 30) / len),
+           margin32,
+           len32 - margin32};
     const Polarity pol = polarity_of(line);
     FittedLine fit{};
     const int32_t bands[2] = {to32(p.band), to32(p.fine_band)};
@@ -146,7 +166,9 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     for (int pass = 0; pass < 2; ++pass) {
         Moments m;
         *held = gather(edges, w, bands[pass], pol, m, steps, ends);
-        if (*held * 100u < *steps * p.min_share_percent || m.n < 8 || !fit_line(m, w.ox32, w.oy32, fit)) return false;
+        if (*held * 100u < *steps * p.min_share_percent || m.n < 8 ||
+            !fit_line(m, w.ox32, w.oy32, fit))
+            return false;
         n = static_cast<uint32_t>(m.n);
         // Next: along the fit, over the same stretch (the corners projected onto it).
         const int32_t ta = to32(along(fit, a.x, a.y)), tb = to32(along(fit, b.x, b.y));
@@ -162,15 +184,17 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     out = make_segment(fit, t1, t2, static_cast<uint16_t>(n > 65535u ? 65535u : n));
     // The polarity stays with the side: flip it when the new normal points the other way.
     const SinCos before = sin_cos(line.theta), after = sin_cos(out.theta);
-    const int64_t dot = static_cast<int64_t>(before.cos.raw) * after.cos.raw + static_cast<int64_t>(before.sin.raw) * after.sin.raw;
+    const int64_t dot = static_cast<int64_t>(before.cos.raw) * after.cos.raw +
+                        static_cast<int64_t>(before.sin.raw) * after.sin.raw;
     out.bright_side = static_cast<int8_t>(dot < 0 ? -line.bright_side : line.bright_side);
     return true;
 }
 
 }  // namespace
 
-uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4], const RefineParams& params, Quad& quad,
-                    Segment sides[4], SideEvidence* evidence) {
+uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
+                    const RefineParams& params, Quad& quad, Segment sides[4],
+                    SideEvidence* evidence) {
     uint8_t refitted = 0;
     Segment fitted[4];
     SideEvidence found{};
@@ -179,7 +203,8 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4], const 
         fitted[i] = line;
         uint32_t held = 0, steps = 0;
         uint8_t ends = 0;
-        if (refit_side(edges, line, quad.corners[i], quad.corners[(i + 1) & 3], params, fitted[i], &held, &steps, &ends))
+        if (refit_side(edges, line, quad.corners[i], quad.corners[(i + 1) & 3], params, fitted[i],
+                       &held, &steps, &ends))
             refitted = static_cast<uint8_t>(refitted | (1u << i));
         found.ends[i] = ends;
         found.held[i] = static_cast<uint16_t>(held > 65535u ? 65535u : held);
@@ -194,7 +219,9 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4], const 
     if (!is_convex(c) || shoelace2(c) >= 0) return 0;
     int first = 0;
     for (int i = 1; i < 4; ++i)
-        if (static_cast<int64_t>(c[i].x.raw) + c[i].y.raw < static_cast<int64_t>(c[first].x.raw) + c[first].y.raw) first = i;
+        if (static_cast<int64_t>(c[i].x.raw) + c[i].y.raw <
+            static_cast<int64_t>(c[first].x.raw) + c[first].y.raw)
+            first = i;
     const uint8_t old_lines[4] = {quad.lines[0], quad.lines[1], quad.lines[2], quad.lines[3]};
     uint8_t mask = 0;
     for (int i = 0; i < 4; ++i) {
@@ -212,17 +239,21 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4], const 
     return mask;
 }
 
-bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params, q16_16* share) {
+bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params,
+                     q16_16* share) {
     uint32_t held = 0, steps = 0;
     bool sides_ok = true;
     for (int i = 0; i < 4; ++i) {
         held += e.held[i];
         steps += e.steps[i];
         const bool hidden = ((static_cast<uint32_t>(completed) >> i) & 1u) != 0;
-        const uint32_t least = hidden ? params.min_hidden_side_evidence_percent : params.min_side_evidence_percent;
-        sides_ok = sides_ok && e.steps[i] > 0 && e.ends[i] == 3u && e.held[i] * 100u >= e.steps[i] * least;
+        const uint32_t least =
+            hidden ? params.min_hidden_side_evidence_percent : params.min_side_evidence_percent;
+        sides_ok =
+            sides_ok && e.steps[i] > 0 && e.ends[i] == 3u && e.held[i] * 100u >= e.steps[i] * least;
     }
-    *share = q16_16::from_raw(steps > 0 ? static_cast<int32_t>((static_cast<int64_t>(held) << 16) / steps) : 0);
+    *share = q16_16::from_raw(
+        steps > 0 ? static_cast<int32_t>((static_cast<int64_t>(held) << 16) / steps) : 0);
     return !params.verify || (sides_ok && held * 100u >= steps * params.min_evidence_percent);
 }
 

@@ -19,16 +19,16 @@
 #include <stdint.h>
 
 #include "lines/edge_list.h"
-#include "quads/quad_detector.h"
 #include "lines/segment.h"
+#include "quads/quad_detector.h"
 
 namespace qt {
 
 struct RefineParams {
-    q16_16 band = q16_16::from_ratio(5, 2);  // first pass: half width of the search, px
-    q16_16 fine_band = q16_16::from_int(1);  // second pass, px
-    q16_16 end_margin = q16_16::from_int(3); // skipped at each corner along the side, px
-    uint8_t min_share_percent = 25;          // steps of the side that must hold a point to refit, %
+    q16_16 band = q16_16::from_ratio(5, 2);   // first pass: half width of the search, px
+    q16_16 fine_band = q16_16::from_int(1);   // second pass, px
+    q16_16 end_margin = q16_16::from_int(3);  // skipped at each corner along the side, px
+    uint8_t min_share_percent = 25;  // steps of the side that must hold a point to refit, %
     // A candidate whose corners all lie within this of a quadrangle already kept is that
     // quadrangle again (the same board from other lines): not refined a second time, px.
     q16_16 duplicate_distance = q16_16::from_int(6);
@@ -53,18 +53,20 @@ struct SideEvidence {
     uint8_t ends[4];
 };
 
-// Refines `quad` (detect_quads() order; side i on *lines[i]) in place and writes
-// each side's line to sides[i]: refitted (its extent the old line's end points projected onto
-// it) or, when too few points were found, the old line. Corners are re-put in detect's order
-// (smallest x + y first; quad.lines, sides and evidence rotate with them). Returns the mask of sides
-// refitted (bit i: side i), 0 when nothing changed — then also when the refitted sides no
-// longer make a convex quadrangle, in which case quad and sides are those given.
-uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4], const RefineParams& params, Quad& quad,
-                    Segment sides[4], SideEvidence* evidence = nullptr);
+// Refines `quad` (detect_quads() order; side i on *lines[i]) in place and writes each side's line
+// to sides[i]: refitted (its extent the old line's end points projected onto it) or, when too few
+// points were found, the old line. Corners are re-put in detect's order (smallest x + y first;
+// quad.lines, sides and evidence rotate with them). Returns the mask of sides refitted (bit i: side
+// i), 0 when nothing changed — then also when the refitted sides no longer make a convex
+// quadrangle, in which case quad and sides are those given.
+uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
+                    const RefineParams& params, Quad& quad, Segment sides[4],
+                    SideEvidence* evidence = nullptr);
 
 // The share of the steps with evidence over the four sides, q16_16 in [0, 1]; false when a
 // side or the whole falls below the verification limits of `params` (never when
 // params.verify is false). completed: bit i when side i was completed rather than found.
-bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params, q16_16* share);
+bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params,
+                     q16_16* share);
 
 }  // namespace qt

@@ -13,7 +13,8 @@ int64_t wide(q16_16 v) { return v.raw; }
 
 QuadParams sized_quad_params(const QuadParams& p, uint16_t height) {
     QuadParams sized = p;
-    if (sized.min_side_length.raw == 0) sized.min_side_length = q16_16::from_int(height >= 20 ? height / 10 : 1);
+    if (sized.min_side_length.raw == 0)
+        sized.min_side_length = q16_16::from_int(height >= 20 ? height / 10 : 1);
     return sized;
 }
 
@@ -24,15 +25,19 @@ bool rule_parallel(angle_t theta_a, angle_t theta_b, const QuadParams& p) {
 }
 
 bool rule_perpendicular(angle_t theta_a, angle_t theta_b, const QuadParams& p) {
-    return kAngleQuarterTurn - orientation_difference(theta_a, theta_b) <= p.perpendicular_tolerance;
+    return kAngleQuarterTurn - orientation_difference(theta_a, theta_b) <=
+           p.perpendicular_tolerance;
 }
 
-bool rule_corners_inside(const Point16 corners[4], uint16_t width, uint16_t height, const QuadParams& p) {
+bool rule_corners_inside(const Point16 corners[4], uint16_t width, uint16_t height,
+                         const QuadParams& p) {
     // Outer pixel edges at -0.5 and size - 0.5; compare in q16_16 raw units, 64-bit.
     const int64_t half = q16_16::one_raw / 2;
     const int64_t lo = -half + wide(p.corner_margin);
-    const int64_t hi_x = static_cast<int64_t>(width) * q16_16::one_raw - half - wide(p.corner_margin);
-    const int64_t hi_y = static_cast<int64_t>(height) * q16_16::one_raw - half - wide(p.corner_margin);
+    const int64_t hi_x =
+        static_cast<int64_t>(width) * q16_16::one_raw - half - wide(p.corner_margin);
+    const int64_t hi_y =
+        static_cast<int64_t>(height) * q16_16::one_raw - half - wide(p.corner_margin);
     for (int i = 0; i < 4; ++i) {
         const int64_t x = wide(corners[i].x), y = wide(corners[i].y);
         if (x < lo || x > hi_x || y < lo || y > hi_y) return false;
@@ -54,8 +59,8 @@ bool rule_aspect(const q16_16 sides[4], const QuadParams& p) {
     const int64_t w = wide(sides[1]) + wide(sides[3]);
     const int64_t h = wide(sides[0]) + wide(sides[2]);
     const int64_t aspect = wide(p.display_aspect), tol = wide(p.aspect_tolerance);
-    const int64_t aspect_h = (aspect * h) >> 16;                // q16_16
-    const int64_t w_tol = (w * tol) >> 16;                      // q16_16
+    const int64_t aspect_h = (aspect * h) >> 16;  // q16_16
+    const int64_t w_tol = (w * tol) >> 16;        // q16_16
     const int64_t aspect_tol_h = (((aspect * tol) >> 16) * h) >> 16;
     return w_tol >= aspect_h && w <= aspect_tol_h;
 }
@@ -97,10 +102,11 @@ bool intersect_lines(const Segment& a, SinCos na, const Segment& b, SinCos nb, P
     // below 2^62.
     const int64_t det = shr_round_half_away(static_cast<int64_t>(na.cos.raw) * nb.sin.raw -
                                                 static_cast<int64_t>(na.sin.raw) * nb.cos.raw,
-                                            30);  // q2_30
+                                            30);                              // q2_30
     if (det > -(int64_t{1} << 20) && det < (int64_t{1} << 20)) return false;  // |sin| < 2^-10
     const int64_t nx = wide(a.rho) * nb.sin.raw - wide(b.rho) * na.sin.raw;   // q16_46
-    const int64_t ny = static_cast<int64_t>(na.cos.raw) * b.rho.raw - static_cast<int64_t>(nb.cos.raw) * a.rho.raw;
+    const int64_t ny =
+        static_cast<int64_t>(na.cos.raw) * b.rho.raw - static_cast<int64_t>(nb.cos.raw) * a.rho.raw;
     const int64_t x = div_round_half_away(nx, det), y = div_round_half_away(ny, det);  // q16_16
     const int64_t limit = int64_t{16384} * q16_16::one_raw;
     if (x < -limit || x > limit || y < -limit || y > limit) return false;

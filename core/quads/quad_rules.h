@@ -74,7 +74,8 @@ bool rule_parallel(angle_t theta_a, angle_t theta_b, const QuadParams& p);
 // Rule 2: the lines' orientations differ from 90° by at most perpendicular_tolerance.
 bool rule_perpendicular(angle_t theta_a, angle_t theta_b, const QuadParams& p);
 // Rule 3: every corner lies inside the frame, corner_margin pixels in from its outer edges.
-bool rule_corners_inside(const Point16 corners[4], uint16_t width, uint16_t height, const QuadParams& p);
+bool rule_corners_inside(const Point16 corners[4], uint16_t width, uint16_t height,
+                         const QuadParams& p);
 // Rule 4: every side length in [min_side_length, max_side_length].
 bool rule_side_lengths(const q16_16 sides[4], const QuadParams& p);
 // Rule 5: with sides in the corner order above (0 left, 1 bottom, 2 right, 3 top), the ratio

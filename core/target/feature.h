@@ -17,7 +17,8 @@ struct Feature {
     int32_t x_q8 = 0, y_q8 = 0;  // position, 1/256 px, pixel centres at integers; sub-pixel
                                  // from a parabola through the response at x-1, x, x+1 (and y)
     int16_t px = 0, py = 0;      // the pixel the patch is centred on (the response maximum)
-    uint8_t patch[static_cast<unsigned>(kSide * kSide)] = {};  // grey levels, row-major, rows py-R..py+R, columns px-R..px+R
+    uint8_t patch[static_cast<unsigned>(kSide * kSide)] =
+        {};  // grey levels, row-major, rows py-R..py+R, columns px-R..px+R
 };
 
 // The features of one frame, strongest first within the frame-wide order harris.h documents.

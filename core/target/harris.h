@@ -39,10 +39,10 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "target/feature.h"
+#include "base/status.h"
 #include "gradient/gradient_stage.h"
 #include "gradient/gradient_word.h"
-#include "base/status.h"
+#include "target/feature.h"
 
 namespace qt {
 
@@ -92,7 +92,8 @@ public:
     Status begin_frame(uint16_t width, uint16_t height, const HarrisConfig& config) {
         const bool abandoned = in_frame_;
         in_frame_ = false;
-        if (width == 0 || height == 0 || width > MaxWidth || height > kMaxHeight) return Status::bad_size;
+        if (width == 0 || height == 0 || width > MaxWidth || height > kMaxHeight)
+            return Status::bad_size;
         const uint32_t slots = uint32_t{config.grid_cols} * config.grid_rows * config.per_cell;
         if (slots == 0 || slots > MaxFeatures) return Status::bad_size;
         config_ = config;
@@ -172,7 +173,8 @@ public:
         uint16_t order[MaxFeatures];
         for (uint16_t k = 0; k < n; ++k) {
             uint16_t i = k;
-            for (; i > 0 && stronger(kept_.items[k], kept_.items[order[i - 1]]); --i) order[i] = order[i - 1];
+            for (; i > 0 && stronger(kept_.items[k], kept_.items[order[i - 1]]); --i)
+                order[i] = order[i - 1];
             order[i] = k;
         }
         // ... then items[i] = old items[order[i]] in place, cycle by cycle, one corner of
@@ -280,7 +282,8 @@ private:
             const int64_t v = mid[x];
             if (v <= 0) continue;
             if (!(v > up[x - 1] && v > up[x] && v > up[x + 1] && v > mid[x - 1])) continue;
-            if (!(v >= mid[x + 1] && v >= down[x - 1] && v >= down[x] && v >= down[x + 1])) continue;
+            if (!(v >= mid[x + 1] && v >= down[x - 1] && v >= down[x] && v >= down[x + 1]))
+                continue;
             if (v < config_.min_response) {
                 ++stats_.weak;
                 continue;
@@ -291,7 +294,8 @@ private:
             f.py = static_cast<int16_t>(r);
             f.response = v;
             // Denominators 2v − r₋ − r₊ >= v − r₋ > 0 and >= |r₋ − r₊| (v >= r₊).
-            f.x_q8 = x * 256 + half_pixel_q8(mid[x + 1] - mid[x - 1], 2 * v - mid[x - 1] - mid[x + 1]);
+            f.x_q8 =
+                x * 256 + half_pixel_q8(mid[x + 1] - mid[x - 1], 2 * v - mid[x - 1] - mid[x + 1]);
             f.y_q8 = r * 256 + half_pixel_q8(down[x] - up[x], 2 * v - up[x] - down[x]);
             keep(f);
         }
@@ -336,7 +340,7 @@ private:
     uint8_t pixels_[static_cast<unsigned>(kPixelRows)][MaxWidth] = {};
     // During a frame cell c owns items[c·per_cell, (c+1)·per_cell); finish() sorts them.
     FeatureSet<PatchRadius, MaxFeatures> kept_;
-    uint8_t cell_count_[MaxFeatures] = {};    // cells <= slots <= MaxFeatures
+    uint8_t cell_count_[MaxFeatures] = {};  // cells <= slots <= MaxFeatures
     HarrisConfig config_;
     HarrisStats stats_;
     uint16_t width_ = 0, height_ = 0, pixel_rows_ = 0, gradient_rows_ = 0;

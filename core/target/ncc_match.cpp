@@ -51,7 +51,8 @@ NccScore ncc_from_sums(const NccSums& s, uint32_t min_variance) {
     // below it mag·2^shift <= root·2^16 < 2^48.
     const uint64_t limit = (root << 16) >> shift;
     const uint64_t q = mag > limit ? 65536 : ((mag << shift) + root / 2) / root;
-    if (num < 0) return {static_cast<int16_t>(q >= 32768 ? -32768 : -static_cast<int32_t>(q)), false};
+    if (num < 0)
+        return {static_cast<int16_t>(q >= 32768 ? -32768 : -static_cast<int32_t>(q)), false};
     return {static_cast<int16_t>(q >= 32767 ? 32767 : q), false};
 }
 

@@ -88,7 +88,8 @@ PatchSums patch_sums(const Feature<R>& f, uint32_t min_variance) {
 template <int R>
 uint32_t patch_dot(const Feature<R>& a, const Feature<R>& b) {
     uint32_t d = 0;
-    for (int i = 0; i < Feature<R>::kSide * Feature<R>::kSide; ++i) d += uint32_t{a.patch[i]} * b.patch[i];
+    for (int i = 0; i < Feature<R>::kSide * Feature<R>::kSide; ++i)
+        d += uint32_t{a.patch[i]} * b.patch[i];
     return d;
 }
 }  // namespace detail
@@ -98,7 +99,8 @@ uint32_t patch_dot(const Feature<R>& a, const Feature<R>& b) {
 // >= min_score, beats the second best by min_margin and, if mutual, prev is also that cur
 // corner's best (first index on ties) among the prev corners whose window holds it. Work:
 // one patch dot product per pair in the window, |prev|·|cur| at most; stack: about
-// 22·N1 + 18·N2 bytes (4 KB at 96 + 96). Output in prev order, up to `capacity`; returns the number written.
+// 22·N1 + 18·N2 bytes (4 KB at 96 + 96). Output in prev order, up to `capacity`; returns the number
+// written.
 template <int R, uint16_t N1, uint16_t N2>
 uint16_t match_features(const FeatureSet<R, N1>& prev, const FeatureSet<R, N2>& cur,
                         const MatchConfig& config, FeatureMatch* out, uint16_t capacity,
@@ -125,7 +127,8 @@ uint16_t match_features(const FeatureSet<R, N1>& prev, const FeatureSet<R, N2>& 
         best_cur[i] = kNone;
         best_score[i] = second_score[i] = kNoScore;
         if (ps[i].flat) continue;
-        const int32_t ex = prev.items[i].px + config.offset_x, ey = prev.items[i].py + config.offset_y;
+        const int32_t ex = prev.items[i].px + config.offset_x,
+                      ey = prev.items[i].py + config.offset_y;
         for (uint16_t j = 0; j < n2; ++j) {
             const int32_t dx = cur.items[j].px - ex, dy = cur.items[j].py - ey;
             if (cs[j].flat || dx < -radius || dx > radius || dy < -radius || dy > radius) continue;

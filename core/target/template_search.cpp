@@ -19,7 +19,8 @@ int32_t vertex_q8(int32_t a, int32_t b, int32_t c) {
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
                             int32_t cx, int32_t cy, uint16_t radius) {
     TemplateHit hit;
-    if (tw == 0 || th == 0 || uint32_t{tw} * th > kNccMaxPixels || region.w < tw || region.h < th) return hit;
+    if (tw == 0 || th == 0 || uint32_t{tw} * th > kNccMaxPixels || region.w < tw || region.h < th)
+        return hit;
     // Top-left corners whose centre (u + (tw − 1)/2, v + (th − 1)/2) is within ±radius of
     // (cx, cy), and whose template lies in the region.
     const int32_t uc = cx - (tw - 1) / 2, vc = cy - (th - 1) / 2;
@@ -66,8 +67,10 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     if (hit.positions == 0) return hit;
     hit.found = true;
     hit.score_q15 = static_cast<int16_t>(best);
-    const int32_t dx = bu > u0 && bu < u1 ? vertex_q8(score(bu - 1, bv), best, score(bu + 1, bv)) : 0;
-    const int32_t dy = bv > v0 && bv < v1 ? vertex_q8(score(bu, bv - 1), best, score(bu, bv + 1)) : 0;
+    const int32_t dx =
+        bu > u0 && bu < u1 ? vertex_q8(score(bu - 1, bv), best, score(bu + 1, bv)) : 0;
+    const int32_t dy =
+        bv > v0 && bv < v1 ? vertex_q8(score(bu, bv - 1), best, score(bu, bv + 1)) : 0;
     hit.x_q8 = bu * 256 + (tw - 1) * 128 + dx;
     hit.y_q8 = bv * 256 + (th - 1) * 128 + dy;
     return hit;

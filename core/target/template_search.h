@@ -30,10 +30,11 @@ struct PixelRegion {
 };
 
 struct TemplateHit {
-    bool found = false;       // at least one candidate centre had the whole template inside the region
-    int32_t x_q8 = 0, y_q8 = 0;  // best template centre, 1/256 px (parabolic sub-pixel fit on the NCC)
-    int16_t score_q15 = 0;    // its NCC, Q15
-    uint32_t positions = 0;   // candidate centres scored
+    bool found = false;  // at least one candidate centre had the whole template inside the region
+    int32_t x_q8 = 0,
+            y_q8 = 0;        // best template centre, 1/256 px (parabolic sub-pixel fit on the NCC)
+    int16_t score_q15 = 0;   // its NCC, Q15
+    uint32_t positions = 0;  // candidate centres scored
 };
 
 // Scores every template placement whose centre lies within ±radius px (per axis) of
@@ -44,8 +45,8 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
                             int32_t cx, int32_t cy, uint16_t radius);
 
 template <uint8_t MaxSide>
-TemplateHit search_template(const TargetTemplate<MaxSide>& t, const PixelRegion& region,
-                            int32_t cx, int32_t cy, uint16_t radius) {
+TemplateHit search_template(const TargetTemplate<MaxSide>& t, const PixelRegion& region, int32_t cx,
+                            int32_t cy, uint16_t radius) {
     return search_template(t.pixels, t.w, t.h, region, cx, cy, radius);
 }
 
@@ -55,7 +56,8 @@ template <uint8_t MaxSide>
 bool cut_template(const PixelRegion& region, int32_t x, int32_t y, uint8_t w, uint8_t h,
                   TargetTemplate<MaxSide>& out) {
     if (w < 1 || h < 1 || w > MaxSide || h > MaxSide || x < region.x0 || y < region.y0 ||
-        int64_t{x} + w > int64_t{region.x0} + region.w || int64_t{y} + h > int64_t{region.y0} + region.h)
+        int64_t{x} + w > int64_t{region.x0} + region.w ||
+        int64_t{y} + h > int64_t{region.y0} + region.h)
         return false;  // (64-bit sums: x, y may be anywhere in int32)
     out.w = w;
     out.h = h;
@@ -77,14 +79,21 @@ public:
         // In 64 bits: the box may lie anywhere in int32 (TargetPipeline::set_target takes any
         // position), and its far ends beyond.
         int64_t left = x0, top = y0, width = w, height = h;
-        if (width > MaxW) { left += (width - MaxW) / 2; width = MaxW; }
-        if (height > MaxH) { top += (height - MaxH) / 2; height = MaxH; }
+        if (width > MaxW) {
+            left += (width - MaxW) / 2;
+            width = MaxW;
+        }
+        if (height > MaxH) {
+            top += (height - MaxH) / 2;
+            height = MaxH;
+        }
         int64_t right = left + width, bottom = top + height;
         if (left < 0) left = 0;
         if (top < 0) top = 0;
         if (right > frame_w) right = frame_w;
         if (bottom > frame_h) bottom = frame_h;
-        if (right <= left || bottom <= top) left = top = right = bottom = 0;  // empty: keeps nothing
+        if (right <= left || bottom <= top)
+            left = top = right = bottom = 0;  // empty: keeps nothing
         region_.x0 = static_cast<int32_t>(left);
         region_.y0 = static_cast<int32_t>(top);
         region_.w = static_cast<uint16_t>(right - left);

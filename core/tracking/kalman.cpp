@@ -7,12 +7,12 @@ namespace qt {
 
 namespace {
 
-constexpr int kCovFrac = KalmanAxis::cov_frac;                 // 32
-constexpr int kPosGainFrac = KalmanGain::pos_frac;             // 59: K₁ and r/S, both in [0, 1]
-constexpr int kVelGainFrac = KalmanGain::vel_frac;             // 44: K₂, |K₂| <= 2^15
-constexpr int kToCov = kCovFrac - q16_16::frac_bits;           // q16_16 raw -> covariance raw
-constexpr int64_t kCeil = PointKalman::kCovCeiling;            // 2^60 raw = 2^28 px²
-constexpr int64_t kPosGainOne = pow2(kPosGainFrac);            // 1.0 in K₁ raw
+constexpr int kCovFrac = KalmanAxis::cov_frac;        // 32
+constexpr int kPosGainFrac = KalmanGain::pos_frac;    // 59: K₁ and r/S, both in [0, 1]
+constexpr int kVelGainFrac = KalmanGain::vel_frac;    // 44: K₂, |K₂| <= 2^15
+constexpr int kToCov = kCovFrac - q16_16::frac_bits;  // q16_16 raw -> covariance raw
+constexpr int64_t kCeil = PointKalman::kCovCeiling;   // 2^60 raw = 2^28 px²
+constexpr int64_t kPosGainOne = pow2(kPosGainFrac);   // 1.0 in K₁ raw
 
 // Parameter ranges, q16_16 raw.
 constexpr int64_t kRMin = q16_16::one_raw / 16, kRMax = 1024 * q16_16::one_raw;

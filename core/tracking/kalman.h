@@ -23,20 +23,23 @@
 //
 // Formats and bounds (the arithmetic behind each bound is beside the code in kalman.cpp):
 //
-// | quantity                 | unit          | format                  | range                                    |
-// |--------------------------|---------------|-------------------------|------------------------------------------|
-// | x, y                     | px            | q16_16                  | ±32768 (measurements ±16384 expected); saturates (flag state_saturated) |
-// | ẋ, ẏ                     | px/frame      | q16_16                  | ±32768; saturates (flag state_saturated) |
-// | P: a = Ppp               | px²           | int64, 32 fraction bits | [0, kCovCeiling = 2^28]                  |
-// | P: b = Ppv               | px²/frame     | int64, 32 fraction bits | [−2^28, 2^28], |b| <= √(a·c)             |
-// | P: c = Pvv               | px²/frame²    | int64, 32 fraction bits | [0, 2^28]                                |
-// | r (R = r·I)              | px²           | q16_16 (param)          | [1/16, 1024]                             |
-// | q (Q scale)              | px²/frame⁴    | q16_16 (param)          | [0, 1024]                                |
-// | S = a + r                | px²           | int64, 32 fraction bits | [1/16, 2^28 + 1024]                      |
-// | 1/S                      | 1/px²         | m·2^−(L+61): m ∈ [2^61, 2^62], L = bit length of S raw | rel. error <= 2^−62 |
-// | K₁ = a/S, and r/S        | 1             | int64, 59 fraction bits | [0, 1]; r/S >= 2^-33                     |
-// | K₂ = b/S                 | 1/frame       | int64, 44 fraction bits | |K₂| <= √(c/r)/2 <= 2^15                 |
-// | ν = z − x                | px            | int64, 16 fraction bits | ±65536                                   |
+// | quantity          | unit       | format                  | range                          |
+// |-------------------|------------|-------------------------|--------------------------------|
+// | x, y              | px         | q16_16                  | ±32768 (measurements ±16384    |
+// |                   |            |                         | expected); saturates (1)       |
+// | ẋ, ẏ              | px/frame   | q16_16                  | ±32768; saturates (1)          |
+// | P: a = Ppp        | px²        | int64, 32 fraction bits | [0, kCovCeiling = 2^28]        |
+// | P: b = Ppv        | px²/frame  | int64, 32 fraction bits | [−2^28, 2^28], |b| <= √(a·c)   |
+// | P: c = Pvv        | px²/frame² | int64, 32 fraction bits | [0, 2^28]                      |
+// | r (R = r·I)       | px²        | q16_16 (param)          | [1/16, 1024]                   |
+// | q (Q scale)       | px²/frame⁴ | q16_16 (param)          | [0, 1024]                      |
+// | S = a + r         | px²        | int64, 32 fraction bits | [1/16, 2^28 + 1024]            |
+// | 1/S               | 1/px²      | (2)                     | relative error <= 2^−62        |
+// | K₁ = a/S, and r/S | 1          | int64, 59 fraction bits | [0, 1]; r/S >= 2^-33           |
+// | K₂ = b/S          | 1/frame    | int64, 44 fraction bits | |K₂| <= √(c/r)/2 <= 2^15       |
+// | ν = z − x         | px         | int64, 16 fraction bits | ±65536                         |
+// (1) and the flag state_saturated is set; (2) m·2^−(L+61), m ∈ [2^61, 2^62], L = the bit length
+// of S's raw value.
 //
 // Rounding: predict is exact (integer additions; q/4 and q/2 are exact because q arrives with 16
 // fraction bits and P has 32) apart from saturation. In update the reciprocal's mantissa rounds

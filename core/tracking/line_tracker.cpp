@@ -1,21 +1,17 @@
 #include "tracking/line_tracker.h"
 
-
 namespace qt {
 
 namespace {
 
 // n·p for a unit normal n (q2_30) and a point p (q16_16): pixels, q16_16 raw, rounded half away.
 int64_t dot_normal(SinCos n, q16_16 x, q16_16 y) {
-    return shr_round_half_away(static_cast<int64_t>(n.cos.raw) * x.raw +
-                                   static_cast<int64_t>(n.sin.raw) * y.raw,
-                               30);
+    return shr_round_half_away(
+        static_cast<int64_t>(n.cos.raw) * x.raw + static_cast<int64_t>(n.sin.raw) * y.raw, 30);
 }
 
 // v·c for v in q16_16 raw (|v| <= 2^31) and c in q2_30: q16_16, rounded half away.
-q16_16 scale(int64_t v, q2_30 c) {
-    return q16_16::from_raw(shr_round_half_away(v * c.raw, 30));
-}
+q16_16 scale(int64_t v, q2_30 c) { return q16_16::from_raw(shr_round_half_away(v * c.raw, 30)); }
 
 // The closest point of line m to the origin o, relative to o: T_i of §2.7.
 void closest_point(const Segment& m, SinCos n, Point16 o, q16_16& cx, q16_16& cy) {
@@ -68,8 +64,8 @@ bool LineTracker::init(const Segment& measured, const LineTrackerParams& params)
     } else {
         const TurnParams& t = params_.turn;
         angle_ = kalman_axis_init(angle_to_deg(measured.theta), t.r_angle, t.p0_turn);
-        const int64_t rho = static_cast<int64_t>(measured.rho.raw) -
-                            dot_normal(n, t.anchor.x, t.anchor.y);
+        const int64_t rho =
+            static_cast<int64_t>(measured.rho.raw) - dot_normal(n, t.anchor.x, t.anchor.y);
         offset_.init(q16_16::from_raw(rho), t.r_offset, t.p0_rate, t.p0_accel);
     }
     flags_ = 0;
@@ -102,8 +98,8 @@ void LineTracker::update(const Segment& measured) {
         // The measured normal, or its opposite with rho negated, whichever lies within 90° of
         // the tracked θ: the same line, and a continuous (θ, ρ).
         const int64_t half = 180 * q16_16::one_raw, quarter = 90 * q16_16::one_raw;
-        int64_t d = wrap_deg(static_cast<int64_t>(angle_to_deg(measured.theta).raw) -
-                             angle_.pos.raw).raw;
+        int64_t d =
+            wrap_deg(static_cast<int64_t>(angle_to_deg(measured.theta).raw) - angle_.pos.raw).raw;
         int64_t sign = 1;
         if (d >= quarter) {
             d -= half;
@@ -113,8 +109,8 @@ void LineTracker::update(const Segment& measured) {
             sign = -1;
         }
         const TurnParams& t = params_.turn;
-        const int64_t rho = sign * (static_cast<int64_t>(measured.rho.raw) -
-                                    dot_normal(n, t.anchor.x, t.anchor.y));
+        const int64_t rho =
+            sign * (static_cast<int64_t>(measured.rho.raw) - dot_normal(n, t.anchor.x, t.anchor.y));
         flags_ = static_cast<uint8_t>(
             flags_ | kalman_axis_update(angle_, q16_16::from_raw(angle_.pos.raw + d), t.r_angle));
         offset_.update(q16_16::from_raw(rho), t.r_offset);
@@ -164,7 +160,9 @@ Segment LineTracker::finish(angle_t theta, int64_t rho_raw) const {
 int LineTracker::farthest_filter() const {
     int far = 0;
     for (int i = 1; i < params_.filters; ++i)
-        if (half_radius2(point_[i].x(), point_[i].y()) > half_radius2(point_[far].x(), point_[far].y())) far = i;
+        if (half_radius2(point_[i].x(), point_[i].y()) >
+            half_radius2(point_[far].x(), point_[far].y()))
+            far = i;
     return far;
 }
 
@@ -172,7 +170,8 @@ Segment LineTracker::polar_line(int i) const {
     const q16_16 cx = point_[i].x(), cy = point_[i].y();
     const Point16 o = params_.origins[i];
     const int64_t rmin = params_.min_radius.raw / 2;  // halved like half_radius2()
-    const angle_t theta = half_radius2(cx, cy) >= rmin * rmin ? atan2_angle(cy.raw, cx.raw) : last_theta_;
+    const angle_t theta =
+        half_radius2(cx, cy) >= rmin * rmin ? atan2_angle(cy.raw, cx.raw) : last_theta_;
     const SinCos n = sin_cos(theta);
     const q16_16 px = q16_16::from_raw(static_cast<int64_t>(o.x.raw) + cx.raw);
     const q16_16 py = q16_16::from_raw(static_cast<int64_t>(o.y.raw) + cy.raw);

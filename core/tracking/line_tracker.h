@@ -29,9 +29,9 @@
 #pragma once
 #include <stdint.h>
 
-#include "tracking/kalman.h"
-#include "quads/quad_rules.h"
 #include "lines/segment.h"
+#include "quads/quad_rules.h"
+#include "tracking/kalman.h"
 #include "tracking/turn_kalman.h"
 
 namespace qt {
@@ -120,12 +120,12 @@ private:
     Segment finish(angle_t theta, int64_t rho_raw) const;
 
     LineTrackerParams params_;
-    PointKalman point_[3];      // closest_points
-    KalmanAxis angle_{};        // turn: θ (deg), ω (deg/frame)
-    TurnKalman offset_;         // turn: ρ from the anchor (px)
-    Point16 ends_[2] = {};      // last measured end points, px
-    angle_t last_theta_ = 0;    // last measured normal direction
-    int8_t last_bright_ = 0;    // last measured Segment::bright_side
+    PointKalman point_[3];    // closest_points
+    KalmanAxis angle_{};      // turn: θ (deg), ω (deg/frame)
+    TurnKalman offset_;       // turn: ρ from the anchor (px)
+    Point16 ends_[2] = {};    // last measured end points, px
+    angle_t last_theta_ = 0;  // last measured normal direction
+    int8_t last_bright_ = 0;  // last measured Segment::bright_side
     uint8_t flags_ = 0;
 };
 

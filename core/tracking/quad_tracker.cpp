@@ -146,7 +146,8 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
                 for (uint16_t j = 0; j < n && j < 256; ++j) {
                     if (used[j / 32] & (1u << (j % 32))) continue;
                     const Segment& s = lines[j];
-                    if (orientation_diff(s.theta, predicted[i].theta) > params_.gate_angle) continue;
+                    if (orientation_diff(s.theta, predicted[i].theta) > params_.gate_angle)
+                        continue;
                     const int64_t gate = params_.gate_distance.raw;
                     if (abs64(signed_distance(predicted[i], normal, s.x1.raw, s.y1.raw)) > gate ||
                         abs64(signed_distance(predicted[i], normal, s.x2.raw, s.y2.raw)) > gate)

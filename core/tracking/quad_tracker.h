@@ -29,10 +29,10 @@
 #pragma once
 #include <stdint.h>
 
-#include "tracking/line_tracker.h"
+#include "lines/segment.h"
 #include "quads/quad_detector.h"
 #include "quads/quad_rules.h"
-#include "lines/segment.h"
+#include "tracking/line_tracker.h"
 
 namespace qt {
 
@@ -77,9 +77,9 @@ struct QuadTrackStats {
 };
 
 enum QuadTrackLost : uint8_t {
-    lost_side_unseen = 1,  // a side predicted for more than max_predicted frames
-    lost_shape = 2,        // no convex quadrangle with sides in range
-    lost_saturated = 3,    // a filter saturated
+    lost_side_unseen = 1,          // a side predicted for more than max_predicted frames
+    lost_shape = 2,                // no convex quadrangle with sides in range
+    lost_saturated = 3,            // a filter saturated
     lost_detection_disagrees = 4,  // no side matched, and the detection is elsewhere
 };
 
@@ -92,7 +92,10 @@ public:
     // QuadTrackerParams{} has no frame size, so its filter origins all sit at (0, 0): pass
     // default_quad_tracker_params(width, height) here or to set_params() before the first step.
     explicit QuadTracker(const QuadTrackerParams& params = QuadTrackerParams{}) : params_(params) {}
-    void set_params(const QuadTrackerParams& params) { params_ = params; reset(); }
+    void set_params(const QuadTrackerParams& params) {
+        params_ = params;
+        reset();
+    }
     void reset();
 
     // One frame: lines[0 .. n) from the lines stage and quads[0 .. quad_count) from

@@ -7,13 +7,13 @@ namespace qt {
 
 namespace {
 
-constexpr int kFrac = TurnKalman::kFrac;           // 32
-constexpr int kToState = kFrac - q16_16::frac_bits; // q16_16 raw -> state / covariance raw
-constexpr int kGainFrac = 44;                       // K₁, K₂: |K| <= 2^15 (see update)
-constexpr int kUnitGainFrac = 59;                   // K₀ and r/S, both in [0, 1]
-constexpr int64_t kCeil = TurnKalman::kCovCeiling;  // 2^28 px² = 2^60 raw
-constexpr int64_t kStateMax = pow2(15 + kFrac);     // ±2^15 px, px/frame, px/frame²
-constexpr int64_t kOne30 = pow2(30);                // 1.0 in q2_30
+constexpr int kFrac = TurnKalman::kFrac;             // 32
+constexpr int kToState = kFrac - q16_16::frac_bits;  // q16_16 raw -> state / covariance raw
+constexpr int kGainFrac = 44;                        // K₁, K₂: |K| <= 2^15 (see update)
+constexpr int kUnitGainFrac = 59;                    // K₀ and r/S, both in [0, 1]
+constexpr int64_t kCeil = TurnKalman::kCovCeiling;   // 2^28 px² = 2^60 raw
+constexpr int64_t kStateMax = pow2(15 + kFrac);      // ±2^15 px, px/frame, px/frame²
+constexpr int64_t kOne30 = pow2(30);                 // 1.0 in q2_30
 // π/180 with 46 fraction bits: round(2^46·π/180) = 1228166276394 (relative error 4·10^-13).
 constexpr int64_t kRadPerDeg46 = 1228166276394;
 constexpr int64_t kRMin = q16_16::one_raw / 16, kRMax = 1024 * q16_16::one_raw;
@@ -45,11 +45,11 @@ int64_t to_cov(int64_t q16_raw) { return q16_raw * pow2(kToState); }
 }  // namespace
 
 TurnTransition turn_transition(q16_16 omega_deg) {
-    const int64_t deg = clamp64(omega_deg.raw, -kMaxTurnDeg * q16_16::one_raw,
-                                kMaxTurnDeg * q16_16::one_raw);
+    const int64_t deg =
+        clamp64(omega_deg.raw, -kMaxTurnDeg * q16_16::one_raw, kMaxTurnDeg * q16_16::one_raw);
     // |deg| <= 45·2^16 raw: the product stays below 2^62. Radians, q2_30, |w| <= 0.786.
     const int64_t w = shr_round_half_away(deg * kRadPerDeg46, 32);
-    const int64_t w2 = mul30(w, w);                                 // [0, 0.62]
+    const int64_t w2 = mul30(w, w);  // [0, 0.62]
     // sin w / w = 1 − w²/(2·3)·(1 − w²/(4·5)·(1 − w²/(6·7)·(1 − w²/(8·9)·(1 − w²/(10·11)))));
     // the first term left out, w^12/13!, is below 10^-11 at |w| = π/4.
     static constexpr int64_t kSincDen[5] = {110, 72, 42, 20, 6};
@@ -162,8 +162,6 @@ void TurnKalman::update(q16_16 z, q16_16 r) {
     if (state_sat) flags_ = static_cast<uint8_t>(flags_ | turn_state_saturated);
 }
 
-q16_16 TurnKalman::rho() const {
-    return q16_16::from_raw(shr_round_half_away(x_[0], kToState));
-}
+q16_16 TurnKalman::rho() const { return q16_16::from_raw(shr_round_half_away(x_[0], kToState)); }
 
 }  // namespace qt

@@ -15,15 +15,17 @@
 // jerk per frame of variance q, Q = q·g·gᵀ with g = [1/6, 1/2, 1]ᵀ.
 //
 // Formats and bounds:
-// | quantity      | unit        | format                   | range                               |
-// |---------------|-------------|--------------------------|-------------------------------------|
-// | ρ             | px          | int64, 32 fraction bits  | ±2^15; saturates (turn_state_saturated) |
-// | ρ'            | px/frame    | int64, 32 fraction bits  | ±2^15; saturates                    |
-// | ρ''           | px/frame²   | int64, 32 fraction bits  | ±2^15; saturates                    |
-// | P (6 numbers) | px²/frame^k | int64, 32 fraction bits  | diagonal [0, 2^28]; |Pij| <= √(Pii·Pjj) once clamped |
-// | A entries     | 1           | q2_30                    | |a| <= 1 (ω clamped to ±kMaxTurnDeg) |
-// | ω             | °/frame     | q16_16 in, rad q2_30 inside | ±45                             |
-// | q, r          | px²/frame⁶, px² | q16_16 (params)      | q [0, 1024], r [1/16, 1024]         |
+// | quantity      | unit            | format                      | range                      |
+// |---------------|-----------------|-----------------------------|----------------------------|
+// | ρ             | px              | int64, 32 fraction bits     | ±2^15; saturates (1)       |
+// | ρ'            | px/frame        | int64, 32 fraction bits     | ±2^15; saturates           |
+// | ρ''           | px/frame²       | int64, 32 fraction bits     | ±2^15; saturates           |
+// | P (6 numbers) | px²/frame^k     | int64, 32 fraction bits     | diagonal [0, 2^28] (2)     |
+// | A entries     | 1               | q2_30                       | |a| <= 1 (3)               |
+// | ω             | °/frame         | q16_16 in, rad q2_30 inside | ±45                        |
+// | q, r          | px²/frame⁶, px² | q16_16 (params)             | q [0, 1024], r [1/16, 1024] |
+// (1) and the flag turn_state_saturated is set; (2) |Pij| <= √(Pii·Pjj) once clamped; (3) ω is
+// clamped to ±kMaxTurnDeg.
 // Every product is formed in 128 bits (mul_shr_round) and rounded half away from zero; the
 // transition coefficients come from Taylor series in ω² (no division, no float), truncation
 // error below 2^-33 at |ω| = 45°. Saturation sets a sticky flag: re-initialise the track.
@@ -43,10 +45,10 @@ enum TurnKalmanFlag : uint8_t {
 
 // The transition coefficients of A for one turn rate, q2_30.
 struct TurnTransition {
-    q2_30 sinc;      // sin ω / ω
-    q2_30 one_cos;   // (1 − cos ω) / ω²
-    q2_30 cos;       // cos ω
-    q2_30 w_sin;     // ω·sin ω
+    q2_30 sinc;     // sin ω / ω
+    q2_30 one_cos;  // (1 − cos ω) / ω²
+    q2_30 cos;      // cos ω
+    q2_30 w_sin;    // ω·sin ω
 };
 
 // ω in degrees per frame (clamped to ±kMaxTurnDeg) -> A's coefficients.
@@ -65,10 +67,10 @@ public:
     // Measurement z = ρ (px) with variance r (px², clamped to [1/16, 1024]).
     void update(q16_16 z, q16_16 r);
 
-    q16_16 rho() const;                           // px, rounded half away
-    const int64_t* state() const { return x_; }   // ρ, ρ', ρ'', 32 fraction bits
-    const int64_t* cov() const { return p_; }     // P00 P01 P02 P11 P12 P22, 32 fraction bits
-    uint8_t flags() const { return flags_; }      // TurnKalmanFlag bits, sticky until init()
+    q16_16 rho() const;                          // px, rounded half away
+    const int64_t* state() const { return x_; }  // ρ, ρ', ρ'', 32 fraction bits
+    const int64_t* cov() const { return p_; }    // P00 P01 P02 P11 P12 P22, 32 fraction bits
+    uint8_t flags() const { return flags_; }     // TurnKalmanFlag bits, sticky until init()
 
 private:
     int64_t x_[3] = {0, 0, 0};

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "scene/board_scene.h"
 #include "gradient/gradient_stage.h"
+#include "scene/board_scene.h"
 
 #ifdef QT_HAVE_OPENCV
 #include <opencv2/imgproc.hpp>
@@ -15,8 +15,8 @@
 
 namespace {
 
-constexpr int kRepeats = 31;         // medians over this many timings
-constexpr int kFramesPerTiming = 10; // frames per timing, to rise above clock resolution
+constexpr int kRepeats = 31;          // medians over this many timings
+constexpr int kFramesPerTiming = 10;  // frames per timing, to rise above clock resolution
 
 template <class F>
 double median_seconds_per_frame(F&& run_frame) {
@@ -48,19 +48,22 @@ int main() {
     });
     std::printf("gradient %dx%d, median of %d timings x %d frames\n", w, h, kRepeats,
                 kFramesPerTiming);
-    std::printf("  core GradientStage (gx, gy, L1, 16-bin direction): %.3f ms/frame, %.1f Mpixel/s\n",
-                core_s * 1e3, mpix / core_s);
+    std::printf(
+        "  core GradientStage (gx, gy, L1, 16-bin direction): %.3f ms/frame, %.1f Mpixel/s\n",
+        core_s * 1e3, mpix / core_s);
 #ifdef QT_HAVE_OPENCV
     cv::setNumThreads(1);  // one core each: a fair per-core comparison
     const cv::Mat img(h, w, CV_8UC1, const_cast<uint8_t*>(frame.pixels.data()));
     cv::Mat dx, dy;
     const double cv_s = median_seconds_per_frame([&] { cv::spatialGradient(img, dx, dy); });
-    std::printf("  OpenCV cv::spatialGradient (3x3 Sobel dx, dy only): %.3f ms/frame, %.1f Mpixel/s\n",
-                cv_s * 1e3, mpix / cv_s);
+    std::printf(
+        "  OpenCV cv::spatialGradient (3x3 Sobel dx, dy only): %.3f ms/frame, %.1f Mpixel/s\n",
+        cv_s * 1e3, mpix / cv_s);
     std::printf("  ratio core / OpenCV throughput: %.2f\n", cv_s / core_s);
 #else
-    std::printf("  OpenCV not found at configure time: no comparison row "
-                "(apt-get install libopencv-imgproc-dev, then reconfigure)\n");
+    std::printf(
+        "  OpenCV not found at configure time: no comparison row "
+        "(apt-get install libopencv-imgproc-dev, then reconfigure)\n");
 #endif
     return 0;
 }

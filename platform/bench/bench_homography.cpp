@@ -1,13 +1,12 @@
-// Host benchmark of the homography stage (core/target/float/homography.h): RANSAC accuracy and time on
-// generated frame pairs with a known inter-frame H (rotation <= 3°, scale 0.97-1.03,
-// translation <= 10 px, perspective <= 1e-4 /px about the centre of a 320×240 frame),
-// N = 200 correspondences with 0.5 px Gaussian noise per coordinate on B and a fraction of
-// gross outliers (B uniform in the frame), 200 trials per row with fixed seeds. Beside it,
-// OpenCV's cv::findHomography with cv::RANSAC and cv::RHO (same 2 px threshold, confidence
-// 0.995, at most 1000 iterations) on the same correspondences in the same run, when OpenCV's
-// calib3d was found at configure time.
-// Run by `bash bench.sh homography-host`; `--trials N` sets the trials per row (200).
-// Everything printed is deterministic except the timings.
+// Host benchmark of the homography stage (core/target/float/homography.h): RANSAC accuracy and time
+// on generated frame pairs with a known inter-frame H (rotation <= 3°, scale 0.97-1.03, translation
+// <= 10 px, perspective <= 1e-4 /px about the centre of a 320×240 frame), N = 200 correspondences
+// with 0.5 px Gaussian noise per coordinate on B and a fraction of gross outliers (B uniform in the
+// frame), 200 trials per row with fixed seeds. Beside it, OpenCV's cv::findHomography with
+// cv::RANSAC and cv::RHO (same 2 px threshold, confidence 0.995, at most 1000 iterations) on the
+// same correspondences in the same run, when OpenCV's calib3d was found at configure time. Run by
+// `bash bench.sh homography-host`; `--trials N` sets the trials per row (200). Everything printed
+// is deterministic except the timings.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -17,10 +16,10 @@
 #include <cstring>
 #include <vector>
 
-#include "target/float/homography.h"
-#include "scene/plane_motion.h"
 #include "base/prng.h"
+#include "scene/plane_motion.h"
 #include "scene/random.h"
+#include "target/float/homography.h"
 
 #ifdef QT_HAVE_OPENCV
 #include <opencv2/calib3d.hpp>
@@ -37,7 +36,7 @@ using sc::apply64;
 
 constexpr double kW = 320, kH = 240;  // frame, px
 constexpr int kPairs = 200;
-constexpr double kNoise = 0.5;       // px per coordinate
+constexpr double kNoise = 0.5;        // px per coordinate
 constexpr float kThresholdPx = 2.0f;  // inlier threshold for every method
 
 // The plausible inter-frame motion of the tests (tests/target/test_homography.cpp).
@@ -106,7 +105,8 @@ struct Stats {
     }
 };
 
-void print_row(int pct, const char* method, const Stats& s, int trials, double ref_us, bool iterations) {
+void print_row(int pct, const char* method, const Stats& s, int trials, double ref_us,
+               bool iterations) {
     const double n = s.ok > 0 ? s.ok : 1;
     char it[16] = "-";
     if (iterations) std::snprintf(it, sizeof it, "%.1f", s.sum_iterations / n);
@@ -114,13 +114,14 @@ void print_row(int pct, const char* method, const Stats& s, int trials, double r
     if (ref_us > 0) std::snprintf(ratio, sizeof ratio, "%.2f", s.median_us() / ref_us);
     char ok[24];
     std::snprintf(ok, sizeof ok, "%d/%d", s.ok, trials);
-    std::printf("| %3d %% | %-15s | %7.3f | %8.3f | %6.1f | %7s | %8.1f | %5s | %7s |\n", pct, method,
-                s.sum_mean / n, s.worst, s.sum_inliers / n, it, s.median_us(), ratio, ok);
+    std::printf("| %3d %% | %-15s | %7.3f | %8.3f | %6.1f | %7s | %8.1f | %5s | %7s |\n", pct,
+                method, s.sum_mean / n, s.worst, s.sum_inliers / n, it, s.median_us(), ratio, ok);
 }
 
 #ifdef QT_HAVE_OPENCV
 // cv::findHomography on the same pairs; false when it returns no matrix.
-bool opencv_estimate(const std::vector<qt::PointPair>& pairs, int method, H64& h, int& inliers, double& us) {
+bool opencv_estimate(const std::vector<qt::PointPair>& pairs, int method, H64& h, int& inliers,
+                     double& us) {
     std::vector<cv::Point2f> a, b;
     for (const auto& p : pairs) {
         a.emplace_back(p.ax, p.ay);
@@ -152,11 +153,16 @@ int main(int argc, char** argv) {
 #ifdef QT_HAVE_OPENCV
     cv::setNumThreads(1);  // one thread for every method
 #endif
-    std::printf("homography host benchmark: %d trials per row, %d pairs, %.1f px noise, 320x240 frame, "
-                "inlier threshold %.0f px, c = 0.995, <= 1000 iterations\n\n",
-                trials, kPairs, kNoise, static_cast<double>(kThresholdPx));
-    std::printf("| out   | method          | mean px | worst px | inl.   | iter.   | med. us  | time  | ok      |\n");
-    std::printf("|-------|-----------------|---------|----------|--------|---------|----------|-------|---------|\n");
+    std::printf(
+        "homography host benchmark: %d trials per row, %d pairs, %.1f px noise, 320x240 frame, "
+        "inlier threshold %.0f px, c = 0.995, <= 1000 iterations\n\n",
+        trials, kPairs, kNoise, static_cast<double>(kThresholdPx));
+    std::printf(
+        "| out   | method          | mean px | worst px | inl.   | iter.   | med. us  | time  | ok "
+        "     |\n");
+    std::printf(
+        "|-------|-----------------|---------|----------|--------|---------|----------|-------|----"
+        "-----|\n");
     for (const int pct : {0, 10, 25, 40, 50}) {
         Stats ours, cv_ransac, cv_rho;
         for (int t = 0; t < trials; ++t) {
@@ -165,7 +171,8 @@ int main(int argc, char** argv) {
             cfg.inlier_px = kThresholdPx;
             cfg.seed = static_cast<uint64_t>(t + 1);
             const auto t0 = Clock::now();
-            const qt::RansacResult r = qt::estimate_homography(tr.pairs.data(), kPairs, cfg, nullptr);
+            const qt::RansacResult r =
+                qt::estimate_homography(tr.pairs.data(), kPairs, cfg, nullptr);
             ours.us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
             if (r.status == qt::HomographyStatus::ok) {
                 H64 h;
@@ -176,7 +183,8 @@ int main(int argc, char** argv) {
             H64 h;
             int inl = 0;
             double us = 0;
-            if (opencv_estimate(tr.pairs, cv::RANSAC, h, inl, us)) cv_ransac.add(h, tr.truth, inl, 0);
+            if (opencv_estimate(tr.pairs, cv::RANSAC, h, inl, us))
+                cv_ransac.add(h, tr.truth, inl, 0);
             cv_ransac.us.push_back(us);
             if (opencv_estimate(tr.pairs, cv::RHO, h, inl, us)) cv_rho.add(h, tr.truth, inl, 0);
             cv_rho.us.push_back(us);
@@ -190,11 +198,12 @@ int main(int argc, char** argv) {
 #endif
         (void)ref;
     }
-    std::printf("\n   mean/worst px: the 4 frame corners under the estimate vs the truth (mean per trial, "
-                "averaged; worst over all);\n   inl.: inliers reported; iter.: hypotheses drawn; med. us: "
-                "median time per estimate;\n   time: median / quadtrack's median; ok: estimates returned. "
-                "True inliers per trial: 200 x (1 - out), a few\n   fewer with 0.5 px noise beyond 2 px "
-                "and a few more from outliers that land within 2 px.\n");
+    std::printf(
+        "\n   mean/worst px: the 4 frame corners under the estimate vs the truth (mean per trial, "
+        "averaged; worst over all);\n   inl.: inliers reported; iter.: hypotheses drawn; med. us: "
+        "median time per estimate;\n   time: median / quadtrack's median; ok: estimates returned. "
+        "True inliers per trial: 200 x (1 - out), a few\n   fewer with 0.5 px noise beyond 2 px "
+        "and a few more from outliers that land within 2 px.\n");
 #ifndef QT_HAVE_OPENCV
     std::printf("   OpenCV (calib3d) was not found at configure time: quadtrack rows only.\n");
 #endif

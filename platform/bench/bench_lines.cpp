@@ -5,19 +5,19 @@
 // Run by `bash bench.sh lines-host`; `--scenes N` sets the scenes per accuracy row (1000).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <cstring>
 #include <functional>
 #include <utility>
 #include <vector>
 
-#include "scene/board_scene.h"
+#include "io/push_frame.h"
 #include "lines/line_detector.h"
+#include "scene/board_scene.h"
 #include "scene/line_match.h"
 #include "scene/line_scene.h"
-#include "io/push_frame.h"
 
 #ifdef QT_HAVE_OPENCV
 #include <opencv2/core.hpp>
@@ -40,7 +40,8 @@ double px(qt::q16_16 v) { return v.raw / 65536.0; }
 
 std::vector<sc::DetectedLine> to_detected(const qt::Segment* s, uint16_t n) {
     std::vector<sc::DetectedLine> d;
-    for (uint16_t i = 0; i < n; ++i) d.push_back({{px(s[i].x1), px(s[i].y1)}, {px(s[i].x2), px(s[i].y2)}});
+    for (uint16_t i = 0; i < n; ++i)
+        d.push_back({{px(s[i].x1), px(s[i].y1)}, {px(s[i].x2), px(s[i].y2)}});
     return d;
 }
 
@@ -79,7 +80,8 @@ double corner_deg(const std::vector<sc::TrueSegment>& truth, size_t i) {
             continue;
         }
         const double ux = far_t.x - v.x, uy = far_t.y - v.y, wx = far_u.x - v.x, wy = far_u.y - v.y;
-        least = std::min(least, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / 3.14159265358979323846);
+        least = std::min(least, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 /
+                                    3.14159265358979323846);
     }
     return least;
 }
@@ -88,7 +90,8 @@ double corner_deg(const std::vector<sc::TrueSegment>& truth, size_t i) {
 // true-detection test of match_lines, for one truth segment).
 int lines_on(const sc::TrueSegment& t, const std::vector<sc::DetectedLine>& d) {
     int n = 0;
-    for (const sc::DetectedLine& l : d) n += match_lines({t}, {l}, sc::MatchRule{}).false_positives == 0 ? 1 : 0;
+    for (const sc::DetectedLine& l : d)
+        n += match_lines({t}, {l}, sc::MatchRule{}).false_positives == 0 ? 1 : 0;
     return n;
 }
 
@@ -96,12 +99,12 @@ int lines_on(const sc::TrueSegment& t, const std::vector<sc::DetectedLine>& d) {
 
 struct Totals {
     int frames = 0;
-    sc::MatchResult lines;           // summed over frames (worst_* are maxima)
-    int seg_found = 0;               // truth found by the PPHT segments, before clustering
+    sc::MatchResult lines;  // summed over frames (worst_* are maxima)
+    int seg_found = 0;      // truth found by the PPHT segments, before clustering
     long edges = 0, segments = 0, line_count = 0, votes = 0, followed = 0;
     long edges_dropped = 0, segments_dropped = 0, lines_dropped = 0, budget_exhausted = 0;
     std::vector<double> seconds;
-    int sharp_scored = 0, sharp_found = 0;  // truth with a polygon corner < 60 deg at an end
+    int sharp_scored = 0, sharp_found = 0;       // truth with a polygon corner < 60 deg at an end
     long lines_on_truth = 0, segs_on_truth = 0;  // detections lying on a scored truth segment
 };
 
@@ -177,15 +180,21 @@ void accuracy(int scenes) {
     static qt::LineDetectorQvga det;
     const qt::LineParams params;
     const sc::MatchRule rule;
-    std::printf("\n1. Accuracy, QVGA 320x240, LineDetectorQvga, default LineParams; %d scenes per row, "
-                "scene seeds 1..%d\n", scenes, scenes);
-    std::printf("   (same seeds => rows a, b, c share geometry). A truth segment >= %.0f px is found when\n"
-                "   a clustered line is within %.0f deg and both ends within %.0f px; FP = line on no truth "
-                "(3 px, 3 deg).\n", rule.min_length, rule.max_angle_deg, rule.max_endpoint_px);
+    std::printf(
+        "\n1. Accuracy, QVGA 320x240, LineDetectorQvga, default LineParams; %d scenes per row, "
+        "scene seeds 1..%d\n",
+        scenes, scenes);
+    std::printf(
+        "   (same seeds => rows a, b, c share geometry). A truth segment >= %.0f px is found when\n"
+        "   a clustered line is within %.0f deg and both ends within %.0f px; FP = line on no "
+        "truth "
+        "(3 px, 3 deg).\n",
+        rule.min_length, rule.max_angle_deg, rule.max_endpoint_px);
     for (const RowSpec& r : rows()) std::printf("   %c: %s\n", r.id, r.what);
     std::vector<std::pair<char, Totals>> notes;
-    std::printf("   row scored found recall%% seg-rec%% FP/fr worst-deg worst-px edges/fr segs/fr lines/fr"
-                "  drops e/s/l budget\n");
+    std::printf(
+        "   row scored found recall%% seg-rec%% FP/fr worst-deg worst-px edges/fr segs/fr lines/fr"
+        "  drops e/s/l budget\n");
     for (const RowSpec& r : rows()) {
         Totals t;
         for (int i = 1; i <= scenes; ++i) {
@@ -195,27 +204,33 @@ void accuracy(int scenes) {
             add(t, scene, det, s, rule);
         }
         const double n = t.frames;
-        std::printf("   %c   %6d %5d %7.1f %8.1f %5.2f %9.3f %8.2f %8.0f %7.1f %8.1f  %5ld/%ld/%ld %6ld\n",
-                    r.id, t.lines.scored, t.lines.found, pct(t.lines.found, t.lines.scored),
-                    pct(t.seg_found, t.lines.scored), t.lines.false_positives / n,
-                    t.lines.worst_angle_deg, t.lines.worst_endpoint_px, t.edges / n, t.segments / n,
-                    t.line_count / n, t.edges_dropped, t.segments_dropped, t.lines_dropped,
-                    t.budget_exhausted);
+        std::printf(
+            "   %c   %6d %5d %7.1f %8.1f %5.2f %9.3f %8.2f %8.0f %7.1f %8.1f  %5ld/%ld/%ld %6ld\n",
+            r.id, t.lines.scored, t.lines.found, pct(t.lines.found, t.lines.scored),
+            pct(t.seg_found, t.lines.scored), t.lines.false_positives / n, t.lines.worst_angle_deg,
+            t.lines.worst_endpoint_px, t.edges / n, t.segments / n, t.line_count / n,
+            t.edges_dropped, t.segments_dropped, t.lines_dropped, t.budget_exhausted);
         notes.emplace_back(r.id, t);
     }
-    std::printf("   seg-rec: the same rule on the PPHT segments before clustering. drops: edge points/"
-                "segments/lines\n   lost to capacity, budget: frames that hit max_walk_steps (totals over "
-                "the row).\n");
+    std::printf(
+        "   seg-rec: the same rule on the PPHT segments before clustering. drops: edge points/"
+        "segments/lines\n   lost to capacity, budget: frames that hit max_walk_steps (totals over "
+        "the row).\n");
     for (const auto& [id, t] : notes) {
         if (id == 'd')
-            std::printf("   d: detections lying on a scored drawn line (3 px, 3 deg), per line: PPHT segments "
-                        "%.2f, clustered lines %.2f\n", static_cast<double>(t.segs_on_truth) / t.lines.scored,
-                        static_cast<double>(t.lines_on_truth) / t.lines.scored);
+            std::printf(
+                "   d: detections lying on a scored drawn line (3 px, 3 deg), per line: PPHT "
+                "segments "
+                "%.2f, clustered lines %.2f\n",
+                static_cast<double>(t.segs_on_truth) / t.lines.scored,
+                static_cast<double>(t.lines_on_truth) / t.lines.scored);
         if (id == 'e')
-            std::printf("   e: sides with a corner < 60 deg at an end: %d/%d found (%.1f%%); other sides: "
-                        "%d/%d (%.1f%%)\n", t.sharp_found, t.sharp_scored, pct(t.sharp_found, t.sharp_scored),
-                        t.lines.found - t.sharp_found, t.lines.scored - t.sharp_scored,
-                        pct(t.lines.found - t.sharp_found, t.lines.scored - t.sharp_scored));
+            std::printf(
+                "   e: sides with a corner < 60 deg at an end: %d/%d found (%.1f%%); other sides: "
+                "%d/%d (%.1f%%)\n",
+                t.sharp_found, t.sharp_scored, pct(t.sharp_found, t.sharp_scored),
+                t.lines.found - t.sharp_found, t.lines.scored - t.sharp_scored,
+                pct(t.lines.found - t.sharp_found, t.lines.scored - t.sharp_scored));
     }
 }
 
@@ -226,10 +241,11 @@ void vote_window(int scenes) {
     qt::LineParams narrow, wide;
     wide.hough.vote_window_deg = 90;
     const sc::MatchRule rule;
-    std::printf("\n2. Vote window: each point votes for theta within +-%u deg of its gradient direction "
-                "(default)\n   vs every theta (90); rows b and c, %d scenes each, both settings on each "
-                "frame in turn;\n   time = median host time per frame, gradient..clustering.\n",
-                static_cast<unsigned>(narrow.hough.vote_window_deg), scenes);
+    std::printf(
+        "\n2. Vote window: each point votes for theta within +-%u deg of its gradient direction "
+        "(default)\n   vs every theta (90); rows b and c, %d scenes each, both settings on each "
+        "frame in turn;\n   time = median host time per frame, gradient..clustering.\n",
+        static_cast<unsigned>(narrow.hough.vote_window_deg), scenes);
     std::printf("   row window  votes/fr followed/fr recall%%  FP/frame  ms/frame\n");
     const std::vector<RowSpec> all = rows();
     for (const RowSpec& r : all) {
@@ -246,9 +262,9 @@ void vote_window(int scenes) {
         for (const Totals* t : {&tn, &tw}) {
             const double n = t->frames;
             std::printf("   %c   %6u %9.0f %11.1f %7.1f %9.2f %9.3f\n", r.id,
-                        static_cast<unsigned>(t == &tn ? narrow.hough.vote_window_deg : 90), t->votes / n,
-                        t->followed / n, pct(t->lines.found, t->lines.scored), t->lines.false_positives / n,
-                        median(t->seconds) * 1e3);
+                        static_cast<unsigned>(t == &tn ? narrow.hough.vote_window_deg : 90),
+                        t->votes / n, t->followed / n, pct(t->lines.found, t->lines.scored),
+                        t->lines.false_positives / n, median(t->seconds) * 1e3);
         }
         std::printf("   %c   ratio 90/%u: votes x%.2f, time x%.2f\n", r.id,
                     static_cast<unsigned>(narrow.hough.vote_window_deg),
@@ -276,13 +292,15 @@ constexpr int kHoughThreshold = 80, kHoughMinLength = 20, kHoughMaxGap = 8;
 
 // For one truth side: "yes"/"no" by `rule`, and the end-point error of the best detection
 // within the rule's angle (worse end, px), or "-" when none is that close in angle.
-void print_side(const sc::TrueSegment& t, const std::vector<sc::DetectedLine>& d, const sc::MatchRule& rule) {
+void print_side(const sc::TrueSegment& t, const std::vector<sc::DetectedLine>& d,
+                const sc::MatchRule& rule) {
     double best = -1;
     for (const sc::DetectedLine& l : d) {
         sc::MatchRule angle_only = rule;
         angle_only.max_endpoint_px = 1e9;
         if (match_lines({t}, {l}, angle_only).found == 0) continue;
-        const double e = std::min(std::max(dist(l.a, t.a), dist(l.b, t.b)), std::max(dist(l.a, t.b), dist(l.b, t.a)));
+        const double e = std::min(std::max(dist(l.a, t.a), dist(l.b, t.b)),
+                                  std::max(dist(l.a, t.b), dist(l.b, t.a)));
         best = best < 0 ? e : std::min(best, e);
     }
     const bool found = match_lines({t}, d, rule).found == 1;
@@ -319,27 +337,33 @@ void vga_time() {
     const qt::LineParams params;
     sc::MatchRule rule;
     rule.max_endpoint_px = 3;
-    std::printf("\n3. VGA 640x480 host time per frame, gradient..clustering (LineDetectorVga, default "
-                "LineParams),\n   median of %d, methods timed alternately in one run. "
-                "board = render_board(default_board_scene());\n   clutter = 3 polygons (side>=80, "
-                "corners>=60deg) + 40 blobs + texture 20 + noise 5 + blur 0.8, seed 7.\n"
-                "   found = truth sides matched (angle 1 deg, both ends 3 px).\n", kVgaRepeats);
+    std::printf(
+        "\n3. VGA 640x480 host time per frame, gradient..clustering (LineDetectorVga, default "
+        "LineParams),\n   median of %d, methods timed alternately in one run. "
+        "board = render_board(default_board_scene());\n   clutter = 3 polygons (side>=80, "
+        "corners>=60deg) + 40 blobs + texture 20 + noise 5 + blur 0.8, seed 7.\n"
+        "   found = truth sides matched (angle 1 deg, both ends 3 px).\n",
+        kVgaRepeats);
 #ifdef QT_HAVE_OPENCV
     cv::setNumThreads(1);  // one core each: a per-core comparison
-    std::printf("   OpenCV %s, 1 thread: cv::Canny(%.0f, %.0f, aperture %d) + cv::HoughLinesP(rho %.0f, "
-                "theta %.0f deg, threshold %d,\n   minLineLength %d, maxLineGap %d); time = OpenCV ms / "
-                "ours ms (> 1: ours faster).\n", CV_VERSION, kCannyLow, kCannyHigh, kCannyAperture,
-                kHoughRho, kHoughThetaDeg, kHoughThreshold, kHoughMinLength, kHoughMaxGap);
+    std::printf(
+        "   OpenCV %s, 1 thread: cv::Canny(%.0f, %.0f, aperture %d) + cv::HoughLinesP(rho %.0f, "
+        "theta %.0f deg, threshold %d,\n   minLineLength %d, maxLineGap %d); time = OpenCV ms / "
+        "ours ms (> 1: ours faster).\n",
+        CV_VERSION, kCannyLow, kCannyHigh, kCannyAperture, kHoughRho, kHoughThetaDeg,
+        kHoughThreshold, kHoughMinLength, kHoughMaxGap);
 #endif
-    std::printf("   frame    ours ms edges segs lines found edrop/sdrop/ldrop/budget"
+    std::printf(
+        "   frame    ours ms edges segs lines found edrop/sdrop/ldrop/budget"
 #ifdef QT_HAVE_OPENCV
-                "  OpenCV ms edge-px segs found   time"
+        "  OpenCV ms edge-px segs found   time"
 #endif
-                "\n");
+        "\n");
     for (const VgaFrame& f : frames) {
         std::vector<double> ours;
 #ifdef QT_HAVE_OPENCV
-        const cv::Mat img(f.img.height, f.img.width, CV_8UC1, const_cast<uint8_t*>(f.img.pixels.data()));
+        const cv::Mat img(f.img.height, f.img.width, CV_8UC1,
+                          const_cast<uint8_t*>(f.img.pixels.data()));
         cv::Mat edges;
         std::vector<cv::Vec4i> segs;
         std::vector<double> theirs;
@@ -360,21 +384,25 @@ void vga_time() {
         std::printf("   %-8s %7.2f %5u %4u %5u %2d/%-2d  %5u/%u/%u/%d", f.name, median(ours) * 1e3,
                     static_cast<unsigned>(st.edges), static_cast<unsigned>(det.segment_count()),
                     static_cast<unsigned>(det.line_count()), mo.found, mo.scored,
-                    static_cast<unsigned>(st.edges_dropped), static_cast<unsigned>(st.hough.segments_dropped),
-                    static_cast<unsigned>(st.cluster.clusters_dropped), st.hough.budget_exhausted ? 1 : 0);
+                    static_cast<unsigned>(st.edges_dropped),
+                    static_cast<unsigned>(st.hough.segments_dropped),
+                    static_cast<unsigned>(st.cluster.clusters_dropped),
+                    st.hough.budget_exhausted ? 1 : 0);
 #ifdef QT_HAVE_OPENCV
         std::vector<sc::DetectedLine> cv_d;
         for (const cv::Vec4i& s : segs)
             cv_d.push_back({{static_cast<double>(s[0]), static_cast<double>(s[1])},
                             {static_cast<double>(s[2]), static_cast<double>(s[3])}});
         const sc::MatchResult mc = match_lines(f.truth, cv_d, rule);
-        std::printf("      %9.2f %7d %4zu %2d/%-2d %6.2f", median(theirs) * 1e3, cv::countNonZero(edges),
-                    segs.size(), mc.found, mc.scored, median(theirs) / median(ours));
+        std::printf("      %9.2f %7d %4zu %2d/%-2d %6.2f", median(theirs) * 1e3,
+                    cv::countNonZero(edges), segs.size(), mc.found, mc.scored,
+                    median(theirs) / median(ours));
 #endif
         std::printf("\n");
         if (std::strcmp(f.name, "board") == 0) {
-            std::printf("   board side i = corner i -> i+1: found? (worse end-point error of the best "
-                        "detection within 1 deg)\n");
+            std::printf(
+                "   board side i = corner i -> i+1: found? (worse end-point error of the best "
+                "detection within 1 deg)\n");
             for (size_t i = 0; i < f.truth.size(); ++i) {
                 std::printf("     side %zu  ours", i);
                 print_side(f.truth[i], ours_d, rule);
@@ -387,18 +415,22 @@ void vga_time() {
         }
     }
 #ifndef QT_HAVE_OPENCV
-    std::printf("   OpenCV not found at configure time: no comparison (apt-get install "
-                "libopencv-imgproc-dev, then reconfigure)\n");
+    std::printf(
+        "   OpenCV not found at configure time: no comparison (apt-get install "
+        "libopencv-imgproc-dev, then reconfigure)\n");
 #endif
-    std::printf("   Timings are medians on a noisy shared 2-core box: compare within one run only.\n");
+    std::printf(
+        "   Timings are medians on a noisy shared 2-core box: compare within one run only.\n");
 }
 
 // ---- 4. RAM -----------------------------------------------------------------------------------
 
-template <class Det> struct Caps;
+template <class Det>
+struct Caps;
 template <uint16_t W, uint16_t H, uint16_t E, uint32_t B, uint16_t T, uint16_t S, uint16_t L>
 struct Caps<qt::LineDetector<W, H, E, B, T, S, L>> {
-    static constexpr uint32_t width = W, height = H, edges = E, bins = B, theta = T, segments = S, lines = L;
+    static constexpr uint32_t width = W, height = H, edges = E, bins = B, theta = T, segments = S,
+                              lines = L;
 };
 
 struct RamColumn {
@@ -409,27 +441,42 @@ struct RamColumn {
 template <class Det>
 RamColumn ram_column() {
     using C = Caps<Det>;
-    const qt::HoughParams hp;  // the accumulator the aliases are sized for: default theta_bins, rho_step
+    const qt::HoughParams
+        hp;  // the accumulator the aliases are sized for: default theta_bins, rho_step
     constexpr uint32_t bins = qt::hough_bins_for(C::width, C::height, qt::HoughParams{}.theta_bins,
                                                  qt::HoughParams{}.rho_step);
-    static_assert(bins == C::bins && C::theta == qt::HoughParams{}.theta_bins, "alias sized for the defaults");
-    const uint32_t parts = Det::gradient_bytes() + Det::edge_stage_bytes() + Det::edge_list_bytes() +
-                           Det::accumulator_bytes() + Det::line_list_bytes();
-    return {{Det::gradient_bytes(), Det::edge_stage_bytes(), Det::edge_list_bytes(), Det::accumulator_bytes(),
-             Det::line_list_bytes(), Det::ram_bytes() - parts, Det::ram_bytes()},
-            C::edges, hp.theta_bins, bins / hp.theta_bins, C::segments, C::lines};
+    static_assert(bins == C::bins && C::theta == qt::HoughParams{}.theta_bins,
+                  "alias sized for the defaults");
+    const uint32_t parts = Det::gradient_bytes() + Det::edge_stage_bytes() +
+                           Det::edge_list_bytes() + Det::accumulator_bytes() +
+                           Det::line_list_bytes();
+    return {{Det::gradient_bytes(), Det::edge_stage_bytes(), Det::edge_list_bytes(),
+             Det::accumulator_bytes(), Det::line_list_bytes(), Det::ram_bytes() - parts,
+             Det::ram_bytes()},
+            C::edges,
+            hp.theta_bins,
+            bins / hp.theta_bins,
+            C::segments,
+            C::lines};
 }
 
 void ram() {
     const RamColumn q = ram_column<qt::LineDetectorQvga>(), v = ram_column<qt::LineDetectorVga>();
-    std::printf("\n4. RAM of one detector (all static, no heap), bytes, from LineDetector's static functions;"
-                "\n   capacities: template arguments of LineDetectorQvga / LineDetectorVga, rho bins from "
-                "hough_bins_for.\n");
+    std::printf(
+        "\n4. RAM of one detector (all static, no heap), bytes, from LineDetector's static "
+        "functions;"
+        "\n   capacities: template arguments of LineDetectorQvga / LineDetectorVga, rho bins from "
+        "hough_bins_for.\n");
     std::printf("   %-36s %12s %12s\n", "part", "QVGA 320x240", "VGA 640x480");
-    const char* names[7] = {"gradient stage", "edge stage (NMS rows)", "edge list (points + row index)",
-                            "accumulator (8-bit bins + cos/sin)", "segment + line lists + scratch",
-                            "other (params, stats, views)", "total = ram_bytes()"};
-    for (int i = 0; i < 7; ++i) std::printf("   %-36s %12u %12u\n", names[i], q.bytes[i], v.bytes[i]);
+    const char* names[7] = {"gradient stage",
+                            "edge stage (NMS rows)",
+                            "edge list (points + row index)",
+                            "accumulator (8-bit bins + cos/sin)",
+                            "segment + line lists + scratch",
+                            "other (params, stats, views)",
+                            "total = ram_bytes()"};
+    for (int i = 0; i < 7; ++i)
+        std::printf("   %-36s %12u %12u\n", names[i], q.bytes[i], v.bytes[i]);
     std::printf("   %-36s %12u %12u\n", "capacity: edge points", q.edges, v.edges);
     char qb[24], vb[24];
     std::snprintf(qb, sizeof qb, "%u x %u", q.theta, q.rho);

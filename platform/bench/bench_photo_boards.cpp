@@ -1,9 +1,9 @@
 // Host benchmark of board detection and tracking in front of real photographs
-// (platform/scene/photo_board_scene.h): boards composited under perspective onto the photographs of a
-// folder (Debian's opencv-doc samples, converted to PNM by the build), at QVGA and VGA, in
-// three sets — unoccluded, one side partly hidden by a dark disc or arm, no board — with
-// OpenCV's squares.cpp recipe on the same frames when it was built in; then a 150-frame
-// sequence of a board moving, turning and scaling in front of a photograph, tracked.
+// (platform/scene/photo_board_scene.h): boards composited under perspective onto the photographs of
+// a folder (Debian's opencv-doc samples, converted to PNM by the build), at QVGA and VGA, in three
+// sets — unoccluded, one side partly hidden by a dark disc or arm, no board — with OpenCV's
+// squares.cpp recipe on the same frames when it was built in; then a 150-frame sequence of a board
+// moving, turning and scaling in front of a photograph, tracked.
 //
 // Detected: every corner of the best quadrangle, in the order returned, within kHitPx of the
 // truth. Corner RMSE over the detected boards' corners. A false detection: any quadrangle on a
@@ -22,13 +22,13 @@
 #include <string>
 #include <vector>
 
-#include "quads/board_detector.h"
 #include "cli/cli_options.h"
 #include "io/image_io.h"
 #include "io/overlay.h"
-#include "scene/photo_board_scene.h"
 #include "io/png_writer.h"
 #include "io/push_frame.h"
+#include "quads/board_detector.h"
+#include "scene/photo_board_scene.h"
 #include "tracking/quad_tracker.h"
 
 #ifdef QT_HAVE_OPENCV
@@ -72,14 +72,16 @@ double weakest_contrast(const sc::PhotoBoardScene& s) {
     double weakest = 1e9;
     for (int i = 0; i < 4; ++i) {
         const sc::Point2 a = s.corners[i], b = s.corners[(i + 1) % 4];
-        const double len = std::hypot(b.x - a.x, b.y - a.y), ex = (b.x - a.x) / len, ey = (b.y - a.y) / len;
+        const double len = std::hypot(b.x - a.x, b.y - a.y), ex = (b.x - a.x) / len,
+                     ey = (b.y - a.y) / len;
         double in = 0, out = 0;
         int n = 0;
         for (double t = 0.2 * len; t <= 0.8 * len; t += 1, ++n) {
             auto at = [&](double depth) {  // inward normal (ey, -ex)
                 const int x = static_cast<int>(std::lround(a.x + ex * t + ey * depth));
                 const int y = static_cast<int>(std::lround(a.y + ey * t - ex * depth));
-                return s.image.at(std::min(s.image.width - 1, std::max(0, x)), std::min(s.image.height - 1, std::max(0, y)));
+                return s.image.at(std::min(s.image.width - 1, std::max(0, x)),
+                                  std::min(s.image.height - 1, std::max(0, y)));
             };
             in += at(3);
             out += at(-3);
@@ -95,7 +97,8 @@ struct Tally {
     int corners = 0;
     std::vector<double> ms;
 
-    const char* add(const sc::PhotoBoardScene& s, bool found, const Corners& c, bool capacity_exceeded, double elapsed_ms) {
+    const char* add(const sc::PhotoBoardScene& s, bool found, const Corners& c,
+                    bool capacity_exceeded, double elapsed_ms) {
         ++scenes;
         ms.push_back(elapsed_ms);
         capacity += capacity_exceeded;
@@ -108,7 +111,8 @@ struct Tally {
             ++wrong;
             return "wrong quadrangle";
         }
-        for (int i = 0; i < 4; ++i) sum_sq += std::pow(std::hypot(c[i].x - s.corners[i].x, c[i].y - s.corners[i].y), 2);
+        for (int i = 0; i < 4; ++i)
+            sum_sq += std::pow(std::hypot(c[i].x - s.corners[i].x, c[i].y - s.corners[i].y), 2);
         corners += 4;
         ++detected;
         return "";
@@ -134,7 +138,8 @@ struct Ours {
         *capacity = s == qt::Status::capacity_exceeded;
         if (det.quad_count() == 0) return false;
         for (int i = 0; i < 4; ++i)
-            c[i] = {det.quads()[0].corners[i].x.raw / 65536.0, det.quads()[0].corners[i].y.raw / 65536.0};
+            c[i] = {det.quads()[0].corners[i].x.raw / 65536.0,
+                    det.quads()[0].corners[i].y.raw / 65536.0};
         return true;
     }
 };
@@ -143,7 +148,8 @@ Ours<qt::BoardDetectorQvga> g_qvga;
 Ours<qt::BoardDetectorVga> g_vga;
 
 bool detect(const qt::io::GreyImage& img, Corners& c, bool* capacity) {
-    return img.width <= 320 && img.height <= 240 ? g_qvga.run(img, c, capacity) : g_vga.run(img, c, capacity);
+    return img.width <= 320 && img.height <= 240 ? g_qvga.run(img, c, capacity)
+                                                 : g_vga.run(img, c, capacity);
 }
 
 // The lines of the last frame detected at that frame's size.
@@ -156,7 +162,8 @@ uint16_t last_line_count(const qt::io::GreyImage& img, const qt::Segment** lines
     return g_vga.det.lines().line_count();
 }
 
-void save_picture(const std::string& path, const sc::PhotoBoardScene& s, bool found, const Corners& c) {
+void save_picture(const std::string& path, const sc::PhotoBoardScene& s, bool found,
+                  const Corners& c) {
     qt::io::RgbImage rgb = qt::io::RgbImage::from_grey(s.image, 70);
     const qt::Segment* lines = nullptr;
     const uint16_t n = last_line_count(s.image, &lines);
@@ -193,12 +200,13 @@ void print_row(const char* method, const char* size, const char* set, Tally& t, 
     if (t.corners) std::snprintf(rmse, sizeof rmse, "%.3f", std::sqrt(t.sum_sq / t.corners));
     char detected[32] = "—";
     if (board) std::snprintf(detected, sizeof detected, "%.1f %%", 100.0 * t.detected / t.scenes);
-    std::printf("| %s | %s | %s | %d | %s | %s | %d (%.1f %%) | %.1f %% | %.2f | %.2f |\n", method, size, set, t.scenes,
-                detected, rmse, t.wrong, 100.0 * t.wrong / t.scenes, 100.0 * t.capacity / t.scenes, t.median_ms(),
-                t.worst_ms());
+    std::printf("| %s | %s | %s | %d | %s | %s | %d (%.1f %%) | %.1f %% | %.2f | %.2f |\n", method,
+                size, set, t.scenes, detected, rmse, t.wrong, 100.0 * t.wrong / t.scenes,
+                100.0 * t.capacity / t.scenes, t.median_ms(), t.worst_ms());
 }
 
-std::string g_sequence_photo = "building";  // the sequence's background: the first photograph of that name
+std::string g_sequence_photo =
+    "building";  // the sequence's background: the first photograph of that name
 
 // The sequence: tracked frames within kHitPx RMS of the truth, overall and while the arm hides
 // a side.
@@ -211,8 +219,10 @@ void run_sequence(const std::vector<Photo>& photos, int w, int h, const qt::Boar
     for (const Photo& p : photos)
         if (p.name.rfind(g_sequence_photo, 0) == 0) chosen = &p;
     const Photo& photo = *chosen;
-    qt::QuadTracker tracker(qt::default_quad_tracker_params(static_cast<uint16_t>(w), static_cast<uint16_t>(h)));
-    qt::QuadTrackerParams tp = qt::default_quad_tracker_params(static_cast<uint16_t>(w), static_cast<uint16_t>(h));
+    qt::QuadTracker tracker(
+        qt::default_quad_tracker_params(static_cast<uint16_t>(w), static_cast<uint16_t>(h)));
+    qt::QuadTrackerParams tp =
+        qt::default_quad_tracker_params(static_cast<uint16_t>(w), static_cast<uint16_t>(h));
     tp.shape = qt::sized_quad_params(params.quads, static_cast<uint16_t>(h));
     tracker.set_params(tp);
     int good = 0, occluded = 0, occluded_good = 0, detected_good = 0;
@@ -243,7 +253,8 @@ void run_sequence(const std::vector<Photo>& photos, int w, int h, const qt::Boar
         double rms = 1e9;
         Corners tc{};
         if (t.state != qt::TrackState::none) {
-            for (int i = 0; i < 4; ++i) tc[i] = {t.corners[i].x.raw / 65536.0, t.corners[i].y.raw / 65536.0};
+            for (int i = 0; i < 4; ++i)
+                tc[i] = {t.corners[i].x.raw / 65536.0, t.corners[i].y.raw / 65536.0};
             corner_error(tc, s.corners, &rms);
         }
         const bool ok = rms <= kHitPx;
@@ -255,12 +266,15 @@ void run_sequence(const std::vector<Photo>& photos, int w, int h, const qt::Boar
             occluded_good += ok;
         }
         if (!pictures.empty() && (k % 10 == 0 || (s.occluded_side >= 0 && k % 5 == 0)))
-            save_picture(pictures + "/sequence_" + std::to_string(w) + "_" + std::to_string(k) + ".png", s,
-                         t.state != qt::TrackState::none, tc);
+            save_picture(
+                pictures + "/sequence_" + std::to_string(w) + "_" + std::to_string(k) + ".png", s,
+                t.state != qt::TrackState::none, tc);
     }
-    std::printf("| sequence | %dx%d | %s | %d | %.1f %% (%d) | %.1f %% (%d of %d) | %.1f %% | %.3f |\n", w, h,
-                photo.name.c_str(), so.frames, 100.0 * good / so.frames, good, 100.0 * occluded_good / std::max(1, occluded),
-                occluded_good, occluded, 100.0 * detected_good / so.frames, worst_rms);
+    std::printf(
+        "| sequence | %dx%d | %s | %d | %.1f %% (%d) | %.1f %% (%d of %d) | %.1f %% | %.3f |\n", w,
+        h, photo.name.c_str(), so.frames, 100.0 * good / so.frames, good,
+        100.0 * occluded_good / std::max(1, occluded), occluded_good, occluded,
+        100.0 * detected_good / so.frames, worst_rms);
     if (!misses.empty()) {
         std::printf("  frames not within %.0f px:", kHitPx);
         for (int k : misses) std::printf(" %d", k);
@@ -295,14 +309,17 @@ int main(int argc, char** argv) {
     }
     qt::cli::DetectOptions options;
     std::string photo_dir;
-    const int parsed = qt::cli::parse_command_line(
-        rest, qt::cli::Command::detect,
-        "usage: bench_photo_boards PHOTO_DIR [--scenes N] [--size qvga|vga|both] [--no-sequence] [--list-failures] "
-        "[--pictures DIR] [detection flags]\n" + qt::cli::options_help(),
-        options, photo_dir, stdout, stderr);
+    const int parsed =
+        qt::cli::parse_command_line(rest, qt::cli::Command::detect,
+                                    "usage: bench_photo_boards PHOTO_DIR [--scenes N] [--size "
+                                    "qvga|vga|both] [--no-sequence] [--list-failures] "
+                                    "[--pictures DIR] [detection flags]\n" +
+                                        qt::cli::options_help(),
+                                    options, photo_dir, stdout, stderr);
     if (parsed >= 0) return parsed;
     if (scenes <= 0 || (size != "qvga" && size != "vga" && size != "both")) {
-        std::fprintf(stderr, "bench_photo_boards: --scenes must be positive, --size qvga, vga or both\n");
+        std::fprintf(stderr,
+                     "bench_photo_boards: --scenes must be positive, --size qvga, vga or both\n");
         return 2;
     }
     const std::vector<Photo> photos = load_photos(photo_dir);
@@ -317,7 +334,8 @@ int main(int argc, char** argv) {
         bool board, occlude;
         uint64_t seed0;
     };
-    const Set sets[] = {{"unoccluded", true, false, 1000000}, {"occluded", true, true, 2000000},
+    const Set sets[] = {{"unoccluded", true, false, 1000000},
+                        {"occluded", true, true, 2000000},
                         {"no board", false, false, 3000000}};
     struct Size {
         const char* name;
@@ -327,13 +345,19 @@ int main(int argc, char** argv) {
     if (size != "vga") sizes.push_back({"QVGA", 320, 240});
     if (size != "qvga") sizes.push_back({"VGA", 640, 480});
 
-    std::printf("boards on %zu photographs of %s: aspect 4:3, 16:9, 1:1; tilt <= 35 deg, roll <= 25 deg, scale 25-70 %%; "
-                "board grey 200-245, shading <= 10 %%, print on half; photograph white at 0.5-0.9 x the board, lighting >= 0.6, "
-                "blur sigma 0-1.25 px, noise sigma 2-7; %d scenes per set and size; detected = every corner within "
-                "%.0f px\n",
-                photos.size(), photo_dir.c_str(), scenes, kHitPx);
-    std::printf("| method | size | set | scenes | detected | corner RMSE px | false detections | capacity_exceeded | "
-                "median ms | worst ms |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "boards on %zu photographs of %s: aspect 4:3, 16:9, 1:1; tilt <= 35 deg, roll <= 25 deg, "
+        "scale 25-70 %%; "
+        "board grey 200-245, shading <= 10 %%, print on half; photograph white at 0.5-0.9 x the "
+        "board, lighting >= 0.6, "
+        "blur sigma 0-1.25 px, noise sigma 2-7; %d scenes per set and size; detected = every "
+        "corner within "
+        "%.0f px\n",
+        photos.size(), photo_dir.c_str(), scenes, kHitPx);
+    std::printf(
+        "| method | size | set | scenes | detected | corner RMSE px | false detections | "
+        "capacity_exceeded | "
+        "median ms | worst ms |\n|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Size& sz : sizes) {
         for (const Method& m : methods) {
             for (const Set& set : sets) {
@@ -351,17 +375,22 @@ int main(int argc, char** argv) {
                     bool capacity = false;
                     const auto t0 = Clock::now();
                     const bool found = m.run(s.image, c, &capacity);
-                    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+                    const double ms =
+                        std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
                     const char* failure = t.add(s, found, c, capacity, ms);
                     if (list_failures && *failure)
-                        std::printf("  %s %s %s seed %llu %s: %s (tilt %.1f, roll %.1f, scale %.2f, aspect %.2f, "
-                                    "blur %.2f, noise %.1f, contrast %.0f%s)\n",
-                                    m.name, sz.name, set.name, static_cast<unsigned long long>(seed), photo.name.c_str(),
-                                    failure, s.pose.tilt_deg, s.pose.rotation_deg, s.pose.scale, s.aspect, s.blur_sigma,
-                                    s.noise_sigma, s.has_board ? weakest_contrast(s) : 0.0,
-                                    capacity ? ", capacity_exceeded" : "");
+                        std::printf(
+                            "  %s %s %s seed %llu %s: %s (tilt %.1f, roll %.1f, scale %.2f, aspect "
+                            "%.2f, "
+                            "blur %.2f, noise %.1f, contrast %.0f%s)\n",
+                            m.name, sz.name, set.name, static_cast<unsigned long long>(seed),
+                            photo.name.c_str(), failure, s.pose.tilt_deg, s.pose.rotation_deg,
+                            s.pose.scale, s.aspect, s.blur_sigma, s.noise_sigma,
+                            s.has_board ? weakest_contrast(s) : 0.0,
+                            capacity ? ", capacity_exceeded" : "");
                     if (!pictures.empty() && &m == &methods[0] && (*failure || k < 4)) {
-                        const std::string stem = pictures + "/" + sz.name + "_" + set.name[0] + std::to_string(seed);
+                        const std::string stem =
+                            pictures + "/" + sz.name + "_" + set.name[0] + std::to_string(seed);
                         save_picture(stem + ".png", s, found, c);
                         std::string error;
                         if (*failure) qt::io::write_pgm(stem + ".pgm", s.image, error);
@@ -372,9 +401,11 @@ int main(int argc, char** argv) {
         }
     }
     if (sequence) {
-        std::printf("\n| sequence | size | photograph | frames | tracked within %.0f px RMS | while a side is hidden | "
-                    "detected within %.0f px | worst RMS px |\n|---|---|---|---|---|---|---|---|\n",
-                    kHitPx, kHitPx);
+        std::printf(
+            "\n| sequence | size | photograph | frames | tracked within %.0f px RMS | while a side "
+            "is hidden | "
+            "detected within %.0f px | worst RMS px |\n|---|---|---|---|---|---|---|---|\n",
+            kHitPx, kHitPx);
         for (const Size& sz : sizes) run_sequence(photos, sz.w, sz.h, options.params, pictures);
     }
     return 0;

@@ -1,6 +1,6 @@
 // Host benchmark of board detection on generated scenes with ground-truth corners
-// (platform/scene/board_bench_scene.h): QVGA boards under perspective (tilt <= 40°, rotation <= 30°,
-// scale 15–80 %) over textured, cluttered, unevenly lit backgrounds with noise and blur, in
+// (platform/scene/board_bench_scene.h): QVGA boards under perspective (tilt <= 40°, rotation <=
+// 30°, scale 15–80 %) over textured, cluttered, unevenly lit backgrounds with noise and blur, in
 // three sets — unoccluded, one side partly occluded, no board — and, when OpenCV was found at
 // configure time, the squares.cpp recipe on the same frames beside ours.
 //
@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/board_bench_scene.h"
-#include "quads/board_detector.h"
 #include "io/push_frame.h"
+#include "quads/board_detector.h"
+#include "scene/board_bench_scene.h"
 
 #ifdef QT_HAVE_OPENCV
 #include "bench/opencv_squares.h"
@@ -86,11 +86,14 @@ bool detect_with(const qt::io::GreyImage& img, const qt::BoardParams& params, Co
     }
     if (g_det.quad_count() == 0) return false;
     for (int i = 0; i < 4; ++i)
-        c[i] = {g_det.quads()[0].corners[i].x.raw / 65536.0, g_det.quads()[0].corners[i].y.raw / 65536.0};
+        c[i] = {g_det.quads()[0].corners[i].x.raw / 65536.0,
+                g_det.quads()[0].corners[i].y.raw / 65536.0};
     return true;
 }
 
-bool ours(const qt::io::GreyImage& img, Corners& c) { return detect_with(img, qt::BoardParams{}, c); }
+bool ours(const qt::io::GreyImage& img, Corners& c) {
+    return detect_with(img, qt::BoardParams{}, c);
+}
 
 // The paper's five rules alone: no contrast test, no support requirement, no edge evidence, no
 // completion of a hidden side (the sides are still refined).
@@ -120,7 +123,8 @@ struct TruthGeometry {
             return d > 90 ? 180 - d : d;
         };
         parallel_deg = std::max({parallel_deg, between(dir[0], dir[2]), between(dir[1], dir[3])});
-        for (int i = 0; i < 4; ++i) perpendicular_deg = std::max(perpendicular_deg, 90 - between(dir[i], dir[(i + 1) % 4]));
+        for (int i = 0; i < 4; ++i)
+            perpendicular_deg = std::max(perpendicular_deg, 90 - between(dir[i], dir[(i + 1) % 4]));
         const double r = (len[1] + len[3]) / (len[0] + len[2]) / display_aspect;
         aspect_factor = std::max({aspect_factor, r, 1 / r});
     }
@@ -132,18 +136,20 @@ struct Method {
 };
 
 #ifdef QT_HAVE_OPENCV
-bool opencv(const qt::io::GreyImage& img, Corners& c) { return qt::bench::opencv_best_square(img, c); }
+bool opencv(const qt::io::GreyImage& img, Corners& c) {
+    return qt::bench::opencv_best_square(img, c);
+}
 #endif
 
 void print_row(const char* method, const char* set, Tally& t, bool board) {
     char rmse[16] = "  —  ";
     if (t.corners) std::snprintf(rmse, sizeof rmse, "%.3f", std::sqrt(t.sum_sq / t.corners));
     if (board)
-        std::printf("| %-22s | %-10s | %5d | %6.1f %% | %s | %5d | %7.3f |\n", method, set, t.scenes,
-                    100.0 * t.detected / t.scenes, rmse, t.wrong, t.median_ms());
+        std::printf("| %-22s | %-10s | %5d | %6.1f %% | %s | %5d | %7.3f |\n", method, set,
+                    t.scenes, 100.0 * t.detected / t.scenes, rmse, t.wrong, t.median_ms());
     else
-        std::printf("| %-22s | %-10s | %5d |        — |      — | %5d (%.1f %%) | %7.3f |\n", method, set, t.scenes,
-                    t.wrong, 100.0 * t.wrong / t.scenes, t.median_ms());
+        std::printf("| %-22s | %-10s | %5d |        — |      — | %5d (%.1f %%) | %7.3f |\n", method,
+                    set, t.scenes, t.wrong, 100.0 * t.wrong / t.scenes, t.median_ms());
 }
 
 }  // namespace
@@ -165,7 +171,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_quads: --scenes must be positive\n");
         return 2;
     }
-    std::vector<Method> methods = {{"quadtrack (fixed point)", ours}, {"quadtrack, rules 1-5 only", rules_only}};
+    std::vector<Method> methods = {{"quadtrack (fixed point)", ours},
+                                   {"quadtrack, rules 1-5 only", rules_only}};
 #ifdef QT_HAVE_OPENCV
     methods.push_back({"OpenCV squares.cpp", opencv});
 #endif
@@ -174,13 +181,19 @@ int main(int argc, char** argv) {
         bool board, occlude;
         uint64_t seed0;
     };
-    const Set sets[] = {{"unoccluded", true, false, 1000000}, {"occluded", true, true, 2000000},
+    const Set sets[] = {{"unoccluded", true, false, 1000000},
+                        {"occluded", true, true, 2000000},
                         {"no board", false, false, 3000000}};
 
-    std::printf("board scenes 320x240: tilt <= 40 deg, rotation <= 30 deg, scale 15-80 %%, noise 4, blur 0.7, "
-                "lighting gain >= 0.55, clutter; %d scenes per set; detected = every corner within %.0f px\n",
-                scenes, kHitPx);
-    std::printf("| method                 | set        | scenes | detected | corner RMSE px | false detections | median ms/frame |\n");
+    std::printf(
+        "board scenes 320x240: tilt <= 40 deg, rotation <= 30 deg, scale 15-80 %%, noise 4, blur "
+        "0.7, "
+        "lighting gain >= 0.55, clutter; %d scenes per set; detected = every corner within %.0f "
+        "px\n",
+        scenes, kHitPx);
+    std::printf(
+        "| method                 | set        | scenes | detected | corner RMSE px | false "
+        "detections | median ms/frame |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
     TruthGeometry geometry;
     for (const Method& m : methods) {
@@ -190,25 +203,32 @@ int main(int argc, char** argv) {
                 sc::BoardBenchOptions o;
                 o.board = set.board;
                 o.occlude = set.occlude;
-                const sc::BoardBenchScene s = sc::make_board_bench_scene(o, set.seed0 + static_cast<uint64_t>(k));
+                const sc::BoardBenchScene s =
+                    sc::make_board_bench_scene(o, set.seed0 + static_cast<uint64_t>(k));
                 if (&m == &methods[0] && set.board && !set.occlude) geometry.add(s, o.aspect);
                 Corners c{};
                 const auto t0 = Clock::now();
                 const bool found = m.run(s.image, c);
-                const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+                const double ms =
+                    std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
                 const char* failure = t.add(s, found, c, ms);
                 if (list_failures && *failure)
-                    std::printf("  %s %s seed %llu: %s (tilt %.1f, rotation %.1f, scale %.2f)\n", m.name, set.name,
-                                static_cast<unsigned long long>(set.seed0 + static_cast<uint64_t>(k)), failure,
-                                s.tilt_deg, s.rotation_deg, s.scale);
+                    std::printf(
+                        "  %s %s seed %llu: %s (tilt %.1f, rotation %.1f, scale %.2f)\n", m.name,
+                        set.name,
+                        static_cast<unsigned long long>(set.seed0 + static_cast<uint64_t>(k)),
+                        failure, s.tilt_deg, s.rotation_deg, s.scale);
             }
             print_row(m.name, set.name, t, set.board);
         }
     }
-    std::printf("true boards (unoccluded set): opposite sides up to %.1f deg apart, adjacent sides up to %.1f deg "
-                "off 90, side ratio off the display's by a factor up to %.2f\n",
-                geometry.parallel_deg, geometry.perpendicular_deg, geometry.aspect_factor);
+    std::printf(
+        "true boards (unoccluded set): opposite sides up to %.1f deg apart, adjacent sides up to "
+        "%.1f deg "
+        "off 90, side ratio off the display's by a factor up to %.2f\n",
+        geometry.parallel_deg, geometry.perpendicular_deg, geometry.aspect_factor);
     std::printf("RAM of the QVGA detector: %u B (lines stage %u B, quadrangle search %u B)\n",
-                qt::BoardDetectorQvga::ram_bytes(), qt::LineDetectorQvga::ram_bytes(), qt::BoardDetectorQvga::quad_bytes());
+                qt::BoardDetectorQvga::ram_bytes(), qt::LineDetectorQvga::ram_bytes(),
+                qt::BoardDetectorQvga::quad_bytes());
     return 0;
 }

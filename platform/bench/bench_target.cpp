@@ -3,16 +3,16 @@
 // fused method, plus the fused method without Table III's reset, on the same frames. Prints a
 // table per sequence and over all of them, and writes SVG charts of the position error over time.
 // Usage: bench_target [--out DIR] [--seeds N]   (default bench_out/target, 3 seeds)
+#include <sys/stat.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
-#include "io/svg_plot.h"
 #include "demo/target_runner.h"
+#include "io/svg_plot.h"
 
 namespace {
 
@@ -42,13 +42,13 @@ const Variant kVariants[] = {
 constexpr double kLossPx = 10;  // an estimate this far from the truth has lost the target
 
 struct Summary {
-    double median_visible = 0;   // median error over frames with the target visible, px
-    double max_occluded = 0;     // worst error under the flare, px
-    double max_out = 0;          // worst error while out of view, px
-    double end_out = 0;          // error in the last out-of-view frame, px
-    double max_after = 0;        // worst error in the 50 frames after it is back, px
-    int frames_to_loss = -1;     // first frame with error > kLossPx (-1: never)
-    int lost_state = -1;         // first frame in state lost (-1: never)
+    double median_visible = 0;  // median error over frames with the target visible, px
+    double max_occluded = 0;    // worst error under the flare, px
+    double max_out = 0;         // worst error while out of view, px
+    double end_out = 0;         // error in the last out-of-view frame, px
+    double max_after = 0;       // worst error in the 50 frames after it is back, px
+    int frames_to_loss = -1;    // first frame with error > kLossPx (-1: never)
+    int lost_state = -1;        // first frame in state lost (-1: never)
 };
 
 Summary summarise(const std::vector<TargetRunFrame>& run) {
@@ -66,12 +66,15 @@ Summary summarise(const std::vector<TargetRunFrame>& run) {
             last_out = static_cast<int>(k);
         }
         if (s.frames_to_loss < 0 && e > kLossPx) s.frames_to_loss = static_cast<int>(k);
-        if (s.lost_state < 0 && f.result.estimate.state == TargetState::lost) s.lost_state = static_cast<int>(k);
+        if (s.lost_state < 0 && f.result.estimate.state == TargetState::lost)
+            s.lost_state = static_cast<int>(k);
     }
-    for (int k = last_out + 1; last_out >= 0 && k < static_cast<int>(run.size()) && k <= last_out + 50; ++k)
+    for (int k = last_out + 1;
+         last_out >= 0 && k < static_cast<int>(run.size()) && k <= last_out + 50; ++k)
         s.max_after = std::max(s.max_after, run[static_cast<size_t>(k)].error_px);
     if (!visible.empty()) {
-        std::nth_element(visible.begin(), visible.begin() + static_cast<long>(visible.size() / 2), visible.end());
+        std::nth_element(visible.begin(), visible.begin() + static_cast<long>(visible.size() / 2),
+                         visible.end());
         s.median_visible = visible[visible.size() / 2];
     }
     return s;
@@ -80,18 +83,24 @@ Summary summarise(const std::vector<TargetRunFrame>& run) {
 std::string frame_text(int k) { return k < 0 ? "never" : std::to_string(k); }
 
 void print_row(const char* name, const Summary& s) {
-    std::printf("| %-16s | %8.2f | %8.1f | %8.1f | %8.1f | %8.1f | %7s | %7s |\n", name, s.median_visible, s.max_occluded,
-                s.max_out, s.end_out, s.max_after, frame_text(s.frames_to_loss).c_str(), frame_text(s.lost_state).c_str());
+    std::printf("| %-16s | %8.2f | %8.1f | %8.1f | %8.1f | %8.1f | %7s | %7s |\n", name,
+                s.median_visible, s.max_occluded, s.max_out, s.end_out, s.max_after,
+                frame_text(s.frames_to_loss).c_str(), frame_text(s.lost_state).c_str());
 }
 
 void print_header() {
-    std::printf("| method           | visible  | occluded | out max  | out end  | after max| to loss | lost at |\n");
-    std::printf("|------------------|----------|----------|----------|----------|----------|---------|---------|\n");
+    std::printf(
+        "| method           | visible  | occluded | out max  | out end  | after max| to loss | "
+        "lost at |\n");
+    std::printf(
+        "|------------------|----------|----------|----------|----------|----------|---------|-----"
+        "----|\n");
 }
 
 // Spans of consecutive frames where pred holds, for shading the charts.
 template <class Pred>
-void add_spans(const std::vector<TargetRunFrame>& run, const char* label, Pred pred, qt::io::LinePlot& plot) {
+void add_spans(const std::vector<TargetRunFrame>& run, const char* label, Pred pred,
+               qt::io::LinePlot& plot) {
     for (size_t k = 0; k < run.size(); ++k) {
         if (!pred(run[k].truth) || (k > 0 && pred(run[k - 1].truth))) continue;
         size_t e = k;
@@ -125,9 +134,12 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    std::printf("RAM (sizeof): TargetPipelineQvga %zu B, of which HarrisDetector<320, 96> %zu B and the previous "
-                "frame's FeatureSet<4, 96> %zu B\n",
-                sizeof(qt::TargetPipelineQvga), sizeof(qt::HarrisDetector<320, 96>), sizeof(qt::FeatureSet<4, 96>));
+    std::printf(
+        "RAM (sizeof): TargetPipelineQvga %zu B, of which HarrisDetector<320, 96> %zu B and the "
+        "previous "
+        "frame's FeatureSet<4, 96> %zu B\n",
+        sizeof(qt::TargetPipelineQvga), sizeof(qt::HarrisDetector<320, 96>),
+        sizeof(qt::FeatureSet<4, 96>));
     mkdir("bench_out", 0755);
     mkdir(out.c_str(), 0755);
     const size_t nv = sizeof kVariants / sizeof kVariants[0];
@@ -138,9 +150,12 @@ int main(int argc, char** argv) {
         const qt::scene::GroundSequence seq(cfg);
         std::vector<qt::io::GreyImage> frames;
         for (int k = 0; k < seq.frames(); ++k) frames.push_back(seq.render(k));
-        std::printf("\nsequence seed %d: %d frames %dx%d, flare over frames %d-%d, out of view %d-%d; errors in px\n", seed,
-                    seq.frames(), cfg.width, cfg.height, cfg.occlusion_start, cfg.occlusion_start + cfg.occlusion_frames - 1,
-                    cfg.out_of_view_start, cfg.out_of_view_start + cfg.out_of_view_frames - 1);
+        std::printf(
+            "\nsequence seed %d: %d frames %dx%d, flare over frames %d-%d, out of view %d-%d; "
+            "errors in px\n",
+            seed, seq.frames(), cfg.width, cfg.height, cfg.occlusion_start,
+            cfg.occlusion_start + cfg.occlusion_frames - 1, cfg.out_of_view_start,
+            cfg.out_of_view_start + cfg.out_of_view_frames - 1);
         print_header();
         qt::io::LinePlot plot;
         plot.title = "Target position error, sequence seed " + std::to_string(seed);
@@ -148,11 +163,14 @@ int main(int argc, char** argv) {
         plot.y_label = "error (px), clipped at 40";
         plot.y_max = 40;
         plot.markers = false;
-        for (int k = 0; k < seq.frames(); k += 50) plot.ticks.push_back({static_cast<double>(k), std::to_string(k)});
+        for (int k = 0; k < seq.frames(); k += 50)
+            plot.ticks.push_back({static_cast<double>(k), std::to_string(k)});
         qt::io::LinePlot reset_plot = plot;
-        reset_plot.title = "Reset of the accumulated homography (Table III), seed " + std::to_string(seed);
+        reset_plot.title =
+            "Reset of the accumulated homography (Table III), seed " + std::to_string(seed);
         for (size_t v = 0; v < nv; ++v) {
-            qt::TargetPipelineConfig config = qt::cli::qvga_target_config(kVariants[v].method, kVariants[v].reset);
+            qt::TargetPipelineConfig config =
+                qt::cli::qvga_target_config(kVariants[v].method, kVariants[v].reset);
             config.tracker.kalman.q_pos = kVariants[v].q_pos;
             config.tracker.kalman.q_vel = kVariants[v].q_vel;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
@@ -162,8 +180,11 @@ int main(int argc, char** argv) {
             if (plot.x.empty()) {
                 for (size_t k = 0; k < run.size(); ++k) plot.x.push_back(static_cast<double>(k));
                 reset_plot.x = plot.x;
-                add_spans(run, "flare", [](const qt::scene::GroundTruth& t) { return t.occluded; }, plot);
-                add_spans(run, "out of view", [](const qt::scene::GroundTruth& t) { return !t.in_view; }, plot);
+                add_spans(
+                    run, "flare", [](const qt::scene::GroundTruth& t) { return t.occluded; }, plot);
+                add_spans(
+                    run, "out of view", [](const qt::scene::GroundTruth& t) { return !t.in_view; },
+                    plot);
                 reset_plot.spans = plot.spans;
             }
             qt::io::PlotSeries series{kVariants[v].name, {}};
@@ -171,7 +192,8 @@ int main(int argc, char** argv) {
             if (kVariants[v].method == TargetMethod::fused) reset_plot.series.push_back(series);
             plot.series.push_back(series);
         }
-        if (seed == 1 && (!write_plot(out + "/error_seed1.svg", plot) || !write_plot(out + "/reset_seed1.svg", reset_plot)))
+        if (seed == 1 && (!write_plot(out + "/error_seed1.svg", plot) ||
+                          !write_plot(out + "/reset_seed1.svg", reset_plot)))
             return 1;
     }
     std::printf("\nmedians over %d sequences (columns as above)\n", seeds);
@@ -189,16 +211,22 @@ int main(int argc, char** argv) {
         m.max_out = med([](const Summary& s) { return s.max_out; });
         m.end_out = med([](const Summary& s) { return s.end_out; });
         m.max_after = med([](const Summary& s) { return s.max_after; });
-        m.frames_to_loss = static_cast<int>(med([](const Summary& s) { return s.frames_to_loss < 0 ? 1e9 : s.frames_to_loss; }));
-        m.lost_state = static_cast<int>(med([](const Summary& s) { return s.lost_state < 0 ? 1e9 : s.lost_state; }));
+        m.frames_to_loss = static_cast<int>(
+            med([](const Summary& s) { return s.frames_to_loss < 0 ? 1e9 : s.frames_to_loss; }));
+        m.lost_state = static_cast<int>(
+            med([](const Summary& s) { return s.lost_state < 0 ? 1e9 : s.lost_state; }));
         if (m.frames_to_loss >= 1000000000) m.frames_to_loss = -1;
         if (m.lost_state >= 1000000000) m.lost_state = -1;
         print_row(kVariants[v].name, m);
     }
-    std::printf("\ncolumns: visible = median error over frames with the target in view and not under the flare;\n"
-                "occluded / out max = worst error under the flare / out of view; out end = error in the last\n"
-                "out-of-view frame; after max = worst error in the 50 frames after the target is back;\n"
-                "to loss = first frame with error > %.0f px; lost at = first frame the tracker said lost.\n",
-                kLossPx);
+    std::printf(
+        "\ncolumns: visible = median error over frames with the target in view and not under the "
+        "flare;\n"
+        "occluded / out max = worst error under the flare / out of view; out end = error in the "
+        "last\n"
+        "out-of-view frame; after max = worst error in the 50 frames after the target is back;\n"
+        "to loss = first frame with error > %.0f px; lost at = first frame the tracker said "
+        "lost.\n",
+        kLossPx);
     return 0;
 }

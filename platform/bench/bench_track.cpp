@@ -1,11 +1,11 @@
 // Host benchmark of the line tracker on quadrangle-3kf §3's synthetic motions
-// (platform/scene/line_motion.h): Experiment 1 (pure translation, 24 directions × 3 speeds, 20 random
-// segments) and Experiment 2 (pure rotation at a fixed Hough r, 3 radii × 5 turn rates, 20
+// (platform/scene/line_motion.h): Experiment 1 (pure translation, 24 directions × 3 speeds, 20
+// random segments) and Experiment 2 (pure rotation at a fixed Hough r, 3 radii × 5 turn rates, 20
 // start angles; rotation about the image origin as in the paper, and about the frame centre),
-// scored by the overlap ratio (2 px band) of each frame's prediction, for the paper's 1KF, 2KF,
-// 3KF and our turn model. Prints Markdown tables and a summary against the aims, and
-// writes the paper's Figures 5 and 6 as SVG charts. Everything printed is deterministic.
-// Run by `bash bench.sh track-host`.
+// scored by the overlap ratio (2 px band) of each frame's prediction, for the paper's 1KF, 2KF, 3KF
+// and our turn model. Prints Markdown tables and a summary against the aims, and writes the
+// paper's Figures 5 and 6 as SVG charts. Everything printed is deterministic. Run by `bash bench.sh
+// track-host`.
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/line_motion.h"
 #include "io/svg_plot.h"
+#include "scene/line_motion.h"
 
 namespace {
 
@@ -60,21 +60,24 @@ void print_translation(const std::vector<Tracker>& tr, const std::vector<sc::Tra
     for (std::size_t d = 0; d < t0.directions_deg.size(); ++d) {
         std::printf("| %g |", t0.directions_deg[d]);
         for (std::size_t s = 0; s < t0.speeds.size(); ++s)
-            for (std::size_t k = 0; k < tr.size(); ++k) std::printf(" %.1f |", pct(t[k].overlap[s][d]));
+            for (std::size_t k = 0; k < tr.size(); ++k)
+                std::printf(" %.1f |", pct(t[k].overlap[s][d]));
         std::printf("\n");
     }
     std::printf("| **mean** |");
     for (std::size_t s = 0; s < t0.speeds.size(); ++s)
-        for (std::size_t k = 0; k < tr.size(); ++k) std::printf(" **%.1f** |", pct(sc::mean_of(t[k].overlap[s])));
+        for (std::size_t k = 0; k < tr.size(); ++k)
+            std::printf(" **%.1f** |", pct(sc::mean_of(t[k].overlap[s])));
     std::printf("\n\n");
 }
 
 void print_rotation(const std::vector<Tracker>& tr, const std::vector<sc::RotationTable>& t,
                     const char* centre_name) {
     const sc::RotationTable& t0 = t[0];
-    std::printf("### Experiment 2: rotation about %s (%g, %g), mean overlap %% over %d start angles, "
-                "frames 1-%d\n\n",
-                centre_name, t0.centre.x, t0.centre.y, sc::kMotionTracks, sc::kMotionFrames - 1);
+    std::printf(
+        "### Experiment 2: rotation about %s (%g, %g), mean overlap %% over %d start angles, "
+        "frames 1-%d\n\n",
+        centre_name, t0.centre.x, t0.centre.y, sc::kMotionTracks, sc::kMotionFrames - 1);
     std::printf("| ω (°/frame) |");
     for (double r : t0.radii)
         for (const Tracker& k : tr) std::printf(" %s r=%g |", k.name, r);
@@ -84,7 +87,8 @@ void print_rotation(const std::vector<Tracker>& tr, const std::vector<sc::Rotati
     for (std::size_t w = 0; w < t0.omegas_deg.size(); ++w) {
         std::printf("| %g |", t0.omegas_deg[w]);
         for (std::size_t r = 0; r < t0.radii.size(); ++r)
-            for (std::size_t k = 0; k < tr.size(); ++k) std::printf(" %.1f |", pct(t[k].overlap[r][w]));
+            for (std::size_t k = 0; k < tr.size(); ++k)
+                std::printf(" %.1f |", pct(t[k].overlap[r][w]));
         std::printf("\n");
     }
     std::printf("\n");
@@ -110,13 +114,15 @@ bool plot_translation(const std::string& dir, const std::vector<Tracker>& tr,
         p.x_label = "direction of motion (°)";
         p.y_label = "overlap ratio (%)";
         p.x = t0.directions_deg;
-        for (double d = 0; d < 360; d += 45) p.ticks.push_back({d, std::to_string(static_cast<int>(d))});
+        for (double d = 0; d < 360; d += 45)
+            p.ticks.push_back({d, std::to_string(static_cast<int>(d))});
         for (std::size_t k = 0; k < tr.size(); ++k) {
             qt::io::PlotSeries ser{tr[k].name, {}};
             for (double v : t[k].overlap[s]) ser.y.push_back(pct(v));
             p.series.push_back(ser);
         }
-        if (!write_plot(dir, "exp1_speed" + std::to_string(static_cast<int>(t0.speeds[s])) + ".svg", p))
+        if (!write_plot(dir, "exp1_speed" + std::to_string(static_cast<int>(t0.speeds[s])) + ".svg",
+                        p))
             return false;
     }
     return true;
@@ -131,7 +137,8 @@ bool plot_rotation(const std::string& dir, const std::string& prefix, const char
     for (std::size_t r = 0; r < t0.radii.size(); ++r) {
         const std::string rs = std::to_string(static_cast<int>(t0.radii[r]));
         qt::io::LinePlot p;
-        p.title = "Pure rotation about " + std::string(centre_text) + ", r = " + rs + " px" + noise_note;
+        p.title =
+            "Pure rotation about " + std::string(centre_text) + ", r = " + rs + " px" + noise_note;
         p.x_label = "angular velocity (°/frame)";
         p.y_label = "overlap ratio (%)";
         for (std::size_t w = 0; w < t0.omegas_deg.size(); ++w) {
@@ -174,12 +181,15 @@ int main(int argc, char** argv) {
             char* end = nullptr;
             errno = 0;
             opt.noise_sigma = std::strtod(argv[++i], &end);
-            if (errno || *end || end == argv[i] || !std::isfinite(opt.noise_sigma) || opt.noise_sigma < 0) {
-                std::fprintf(stderr, "bench_track: --noise needs a number >= 0, got '%s'\n", argv[i]);
+            if (errno || *end || end == argv[i] || !std::isfinite(opt.noise_sigma) ||
+                opt.noise_sigma < 0) {
+                std::fprintf(stderr, "bench_track: --noise needs a number >= 0, got '%s'\n",
+                             argv[i]);
                 return 2;
             }
         } else {
-            std::fprintf(stderr, "bench_track: unknown or incomplete option '%s' (try --help)\n", a.c_str());
+            std::fprintf(stderr, "bench_track: unknown or incomplete option '%s' (try --help)\n",
+                         a.c_str());
             return 2;
         }
     }
@@ -221,7 +231,8 @@ int main(int argc, char** argv) {
     std::printf("translation, mean over directions, turn vs 3KF:");
     for (std::size_t s = 0; s < exp1[3].speeds.size(); ++s) {
         const double turn = sc::mean_of(exp1[3].overlap[s]), kf3 = sc::mean_of(exp1[2].overlap[s]);
-        std::printf("%s v=%g %.1f %% vs %.1f %%", s ? "," : "", exp1[3].speeds[s], pct(turn), pct(kf3));
+        std::printf("%s v=%g %.1f %% vs %.1f %%", s ? "," : "", exp1[3].speeds[s], pct(turn),
+                    pct(kf3));
         met = met && turn >= kf3 - kAimVs3kf;
     }
     std::printf(" (aim: turn >= 3KF - %.0f point): %s\n", pct(kAimVs3kf), met ? "met" : "NOT met");
@@ -231,7 +242,8 @@ int main(int argc, char** argv) {
         !plot_rotation(out, "exp2", "the origin", tr, exp2o, note) ||
         !plot_rotation(out, "exp2_centre", "the frame centre", tr, exp2c, note))
         return 1;
-    std::printf("\ncharts: %s/exp1_speed{1,2,3}.svg, exp2_r{10,50,100}.svg, exp2_centre_r{10,50,100}.svg\n",
-                out.c_str());
+    std::printf(
+        "\ncharts: %s/exp1_speed{1,2,3}.svg, exp2_r{10,50,100}.svg, exp2_centre_r{10,50,100}.svg\n",
+        out.c_str());
     return 0;
 }

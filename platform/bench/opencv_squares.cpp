@@ -31,7 +31,8 @@ double max_abs_cosine(const std::vector<cv::Point>& q) {
 // smallest x + y (ties: the smaller x).
 std::array<scene::Point2, 4> ordered(const std::vector<cv::Point>& q) {
     std::array<scene::Point2, 4> c;
-    for (std::size_t i = 0; i < 4; ++i) c[i] = {static_cast<double>(q[i].x), static_cast<double>(q[i].y)};
+    for (std::size_t i = 0; i < 4; ++i)
+        c[i] = {static_cast<double>(q[i].x), static_cast<double>(q[i].y)};
     double twice_area = 0;
     for (std::size_t i = 0; i < 4; ++i) {
         const scene::Point2& a = c[i];
@@ -51,17 +52,20 @@ std::array<scene::Point2, 4> ordered(const std::vector<cv::Point>& q) {
 // The 4-gon area (shoelace), px².
 double area(const std::array<scene::Point2, 4>& c) {
     double twice = 0;
-    for (std::size_t i = 0; i < 4; ++i) twice += c[i].x * c[(i + 1) % 4].y - c[(i + 1) % 4].x * c[i].y;
+    for (std::size_t i = 0; i < 4; ++i)
+        twice += c[i].x * c[(i + 1) % 4].y - c[(i + 1) % 4].x * c[i].y;
     return std::fabs(twice) / 2;
 }
 
 }  // namespace
 
-std::vector<std::array<scene::Point2, 4>> opencv_squares(const io::GreyImage& grey, const SquaresParams& p) {
+std::vector<std::array<scene::Point2, 4>> opencv_squares(const io::GreyImage& grey,
+                                                         const SquaresParams& p) {
     std::vector<std::array<scene::Point2, 4>> found;
     // pyrDown needs a destination of at least 1×1; the pixel buffer must match the size.
     if (grey.width < 2 || grey.height < 2 ||
-        grey.pixels.size() != static_cast<std::size_t>(grey.width) * static_cast<std::size_t>(grey.height))
+        grey.pixels.size() !=
+            static_cast<std::size_t>(grey.width) * static_cast<std::size_t>(grey.height))
         return found;
     const int levels = std::max(1, p.threshold_levels);
 
@@ -95,7 +99,8 @@ std::vector<std::array<scene::Point2, 4>> opencv_squares(const io::GreyImage& gr
     return found;
 }
 
-bool opencv_best_square(const io::GreyImage& grey, std::array<scene::Point2, 4>& corners, const SquaresParams& p) {
+bool opencv_best_square(const io::GreyImage& grey, std::array<scene::Point2, 4>& corners,
+                        const SquaresParams& p) {
     const std::vector<std::array<scene::Point2, 4>> all = opencv_squares(grey, p);
     const double x_max = grey.width - 2.0, y_max = grey.height - 2.0;
     const std::array<scene::Point2, 4>* best = nullptr;

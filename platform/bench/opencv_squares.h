@@ -19,11 +19,11 @@
 namespace qt::bench {
 
 struct SquaresParams {
-    int threshold_levels = 11;    // N: level 0 is Canny, levels 1..N-1 are plain thresholds
-    double approx_epsilon = 0.02; // approxPolyDP tolerance as a fraction of the arc length
-    double min_area_px2 = 1000;   // minimum |contourArea| of the 4-gon, px²
-    double max_cosine = 0.3;      // every corner's |cos| must be below this
-    int canny_high = 50;          // Canny upper threshold (lower is 0, aperture 5)
+    int threshold_levels = 11;     // N: level 0 is Canny, levels 1..N-1 are plain thresholds
+    double approx_epsilon = 0.02;  // approxPolyDP tolerance as a fraction of the arc length
+    double min_area_px2 = 1000;    // minimum |contourArea| of the 4-gon, px²
+    double max_cosine = 0.3;       // every corner's |cos| must be below this
+    int canny_high = 50;           // Canny upper threshold (lower is 0, aperture 5)
 };
 
 // Every quadrangle the squares.cpp recipe accepts, corners as approxPolyDP returns them

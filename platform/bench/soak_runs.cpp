@@ -6,13 +6,13 @@
 #include <utility>
 #include <vector>
 
-#include "scene/det_math.h"
-#include "target/float/homography.h"
-#include "scene/line_motion.h"
 #include "base/prng.h"
 #include "quads/quad_detector.h"
-#include "tracking/quad_tracker.h"
+#include "scene/det_math.h"
+#include "scene/line_motion.h"
 #include "scene/random.h"
+#include "target/float/homography.h"
+#include "tracking/quad_tracker.h"
 
 namespace qt::soak {
 
@@ -37,7 +37,8 @@ std::string words(const char* format, Args... args) {
 
 }  // namespace
 
-VarianceBound cv_variance_bound(double q, double r, double p0_pos, double p0_vel, int max_gap, int age) {
+VarianceBound cv_variance_bound(double q, double r, double p0_pos, double p0_vel, int max_gap,
+                                int age) {
     VarianceBound b;
     const int last = max_gap - 1;  // predictions since the last update while the track lives
     // Before the first update: the initial position, velocity 0 (its prior), m predictions.
@@ -124,7 +125,8 @@ double corner_error(const TrackedQuad& t, const P truth[4]) {
         double worst = 0;
         for (int i = 0; i < 4; ++i) {
             const P& c = truth[(i + r) % 4];
-            worst = std::max(worst, std::hypot(val(t.corners[i].x) - c.x, val(t.corners[i].y) - c.y));
+            worst =
+                std::max(worst, std::hypot(val(t.corners[i].x) - c.x, val(t.corners[i].y) - c.y));
         }
         best = std::min(best, worst);
     }
@@ -155,13 +157,16 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
     const double r = turn ? val(params.lines.turn.r_angle) : val(params.lines.kalman.r);
     const double p0_pos = turn ? val(params.lines.turn.r_angle) : val(params.lines.kalman.p0_pos);
     const double p0_vel = turn ? val(params.lines.turn.p0_turn) : val(params.lines.kalman.p0_vel);
-    std::vector<VarianceBound> by_age(static_cast<size_t>(max_gap) + 1);  // ages >= max_gap share one
-    for (int a = 0; a <= max_gap; ++a) by_age[static_cast<size_t>(a)] = cv_variance_bound(q, r, p0_pos, p0_vel, max_gap, a);
+    std::vector<VarianceBound> by_age(static_cast<size_t>(max_gap) +
+                                      1);  // ages >= max_gap share one
+    for (int a = 0; a <= max_gap; ++a)
+        by_age[static_cast<size_t>(a)] = cv_variance_bound(q, r, p0_pos, p0_vel, max_gap, a);
     const VarianceBound settled = by_age[static_cast<size_t>(max_gap)];
     res.pos_variance_bound = settled.pos;
     res.vel_variance_bound = settled.vel;
     res.settled_age = static_cast<uint32_t>(max_gap);
-    res.pos_variance_bound_young = by_age[static_cast<size_t>(max_gap) - 1].pos;  // the largest before max_gap
+    res.pos_variance_bound_young =
+        by_age[static_cast<size_t>(max_gap) - 1].pos;  // the largest before max_gap
     res.vel_variance_bound_young = by_age[static_cast<size_t>(max_gap) - 1].vel;
 
     auto fail = [&](uint32_t k, const std::string& what) {
@@ -186,10 +191,10 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
         int64_t first_full = -1, first_full_late = -1, recovered = -1;
     };
     std::vector<BurstLog> log(bursts.size());
-    size_t next_burst = 0;   // the first burst whose start is still ahead or under way
-    int64_t current = -1;    // the burst being recovered from (index), -1 if none
+    size_t next_burst = 0;  // the first burst whose start is still ahead or under way
+    int64_t current = -1;   // the burst being recovered from (index), -1 if none
     uint32_t last_loss_window_end = 0;
-    uint32_t last_age = 0;   // the age of the previous frame's track
+    uint32_t last_age = 0;  // the age of the previous frame's track
 
     Segment lines[4];
     LinePair pairs[64];
@@ -244,9 +249,11 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
         last_age = out.age;
         const double err = out.state == TrackState::none ? 1e30 : corner_error(out, truth);
 
-        // Covariances of every constant-velocity filter axis, against the bound for the track's age.
+        // Covariances of every constant-velocity filter axis, against the bound for the track's
+        // age.
         if (out.state != TrackState::none) {
-            const VarianceBound& bound = by_age[std::min<size_t>(out.age, static_cast<size_t>(max_gap))];
+            const VarianceBound& bound =
+                by_age[std::min<size_t>(out.age, static_cast<size_t>(max_gap))];
             for (int s = 0; s < 4; ++s) {
                 const LineTracker& lt = tracker.side(s);
                 if (lt.flags() != 0) fail(k, words("side %d saturated", s));
@@ -254,8 +261,9 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
                 int na = 0;
                 if (turn) {
                     axes[na++] = &lt.angle_filter();
-                    res.max_offset_variance = std::max(
-                        res.max_offset_variance, static_cast<double>(lt.offset_filter().cov()[0]) / 4294967296.0);
+                    res.max_offset_variance =
+                        std::max(res.max_offset_variance,
+                                 static_cast<double>(lt.offset_filter().cov()[0]) / 4294967296.0);
                 } else {
                     for (int f = 0; f < lt.params().filters; ++f) {
                         axes[na++] = &lt.point_filter(f).axis_x();
@@ -271,7 +279,8 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
                     mp = std::max(mp, pp);
                     mv = std::max(mv, vv);
                     if (pp > bound.pos || vv > bound.vel)
-                        fail(k, words("side %d axis %d: Ppp %.3f (bound %.3f), Pvv %.3f (bound %.3f) at age %u",
+                        fail(k, words("side %d axis %d: Ppp %.3f (bound %.3f), Pvv %.3f (bound "
+                                      "%.3f) at age %u",
                                       s, i, pp, bound.pos, vv, bound.vel, out.age));
                 }
             }
@@ -280,40 +289,52 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
         // Bursts: the rule for long ones, the recovery of every one.
         if (in_burst) {
             const Burst& b = bursts[next_burst];
-            const uint32_t gone = b.start + params.max_predicted;  // the burst's (max_predicted + 1)-th frame
+            const uint32_t gone =
+                b.start + params.max_predicted;  // the burst's (max_predicted + 1)-th frame
             if (k >= gone && out.state != TrackState::none)
-                fail(k, words("a track still carried %u frames into a burst of total loss", k - b.start + 1));
+                fail(k, words("a track still carried %u frames into a burst of total loss",
+                              k - b.start + 1));
         } else if (current >= 0) {
             const Burst& b = bursts[static_cast<size_t>(current)];
             BurstLog& l = log[static_cast<size_t>(current)];
             const bool is_long = b.end - b.start > params.max_predicted;
             if (full && l.first_full < 0) l.first_full = k;
-            if (full && l.first_full_late < 0 && k >= b.start + params.max_predicted) l.first_full_late = k;
+            if (full && l.first_full_late < 0 && k >= b.start + params.max_predicted)
+                l.first_full_late = k;
             if (l.recovered < 0 && err <= cfg.recovery_tolerance_px) l.recovered = k;
             if (is_long) {
                 // Gone until the first frame with all four sides, started there.
                 if (l.first_full < 0 && out.state != TrackState::none)
-                    fail(k, words("a track after a burst of %u frames before the board was whole again", b.end - b.start));
-                if (l.first_full == k && (out.state != TrackState::started || err > cfg.recovery_tolerance_px))
-                    fail(k, words("no new track (state %s, error %.2f px) in the first whole frame after a long burst",
+                    fail(
+                        k,
+                        words("a track after a burst of %u frames before the board was whole again",
+                              b.end - b.start));
+                if (l.first_full == k &&
+                    (out.state != TrackState::started || err > cfg.recovery_tolerance_px))
+                    fail(k, words("no new track (state %s, error %.2f px) in the first whole frame "
+                                  "after a long burst",
                                   track_state_name(out.state), err < 1e29 ? err : -1.0));
             }
             if (l.first_full_late >= 0 && l.recovered < 0)
-                fail(k, words("not recovered by the first whole frame at or after the burst's end and its frame %u",
+                fail(k, words("not recovered by the first whole frame at or after the burst's end "
+                              "and its frame %u",
                               params.max_predicted + 1));
             if (l.recovered >= 0 && l.first_full >= 0 && l.first_full_late >= 0) {
                 // Closed: recovered and the rule's frame is past.
                 const uint32_t rec = static_cast<uint32_t>(l.recovered) - b.end;
                 res.worst_recovery = std::max(res.worst_recovery, rec);
-                res.worst_wait_full = std::max(res.worst_wait_full, static_cast<uint32_t>(l.first_full) - b.end);
+                res.worst_wait_full =
+                    std::max(res.worst_wait_full, static_cast<uint32_t>(l.first_full) - b.end);
                 res.recovered_at_burst_end += rec == 0;
                 res.recovered_after_whole += l.recovered > l.first_full;
                 ++res.bursts;
                 res.long_bursts += is_long;
-                last_loss_window_end = std::max(b.start + params.max_predicted, static_cast<uint32_t>(l.recovered));
+                last_loss_window_end =
+                    std::max(b.start + params.max_predicted, static_cast<uint32_t>(l.recovered));
                 current = -1;
             } else if (l.recovered >= 0) {
-                last_loss_window_end = std::max(last_loss_window_end, static_cast<uint32_t>(l.recovered));
+                last_loss_window_end =
+                    std::max(last_loss_window_end, static_cast<uint32_t>(l.recovered));
             }
         } else if (out.state != TrackState::none) {
             res.worst_error_tracking = std::max(res.worst_error_tracking, err);
@@ -350,7 +371,8 @@ struct Camera {
     P vehicle;      // the vehicle on the ground, m
     M3 ground_to_image() const {
         const double c = s * std::cos(psi), n = s * std::sin(psi);
-        return M3{{c, -n, aim.x - (c * vehicle.x - n * vehicle.y), n, c, aim.y - (n * vehicle.x + c * vehicle.y), 0, 0, 1}};
+        return M3{{c, -n, aim.x - (c * vehicle.x - n * vehicle.y), n, c,
+                   aim.y - (n * vehicle.x + c * vehicle.y), 0, 0, 1}};
     }
 };
 
@@ -364,7 +386,9 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
     const TargetTrackerParams& tp = cfg.params;
     const double w = cfg.width, h = cfg.height;
     const P centre{(w - 1) / 2, (h - 1) / 2};
-    auto in_image = [&](P a) { return a.x >= -0.5 && a.y >= -0.5 && a.x < w - 0.5 && a.y < h - 0.5; };
+    auto in_image = [&](P a) {
+        return a.x >= -0.5 && a.y >= -0.5 && a.x < w - 0.5 && a.y < h - 0.5;
+    };
     auto fail = [&](uint32_t k, const std::string& what) {
         ++res.breaks;
         if (res.first_break.empty()) res.first_break = words("frame %u: ", k) + what;
@@ -375,15 +399,19 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
     const double heading = scene::uniform(rng, -kPi, kPi);
     const P velocity{0.2 * std::cos(heading), 0.2 * std::sin(heading)};
     const double phase = scene::uniform(rng, 0, 2 * kPi);
-    Camera cam{2.5, scene::uniform(rng, -kPi, kPi), centre, {scene::uniform(rng, -500, 500), scene::uniform(rng, -500, 500)}};
+    Camera cam{2.5,
+               scene::uniform(rng, -kPi, kPi),
+               centre,
+               {scene::uniform(rng, -500, 500), scene::uniform(rng, -500, 500)}};
     double zoom_factor = 1;  // product of the scale spells' zooms so far
 
     TargetTracker tracker;
     M3 prev_g2i = cam.ground_to_image();
-    tracker.init(static_cast<float>(cam.aim.x), static_cast<float>(cam.aim.y), cfg.width, cfg.height, tp);
+    tracker.init(static_cast<float>(cam.aim.x), static_cast<float>(cam.aim.y), cfg.width,
+                 cfg.height, tp);
     // The rule's inputs, kept from the inputs alone.
     uint32_t unseen = 0, bad_run = 0;
-    double ref_scale = cam.s;   // scale at the tracker's reference frame (init or last reset)
+    double ref_scale = cam.s;  // scale at the tracker's reference frame (init or last reset)
     bool lost = false, trusted = true;
     uint32_t frame = 0;
 
@@ -403,7 +431,8 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
         const double a = prev_g2i.m[0], b = prev_g2i.m[1], c = prev_g2i.m[3], d = prev_g2i.m[4];
         const double det = a * d - b * c;
         const double ia = d / det, ib = -b / det, ic = -c / det, id = a / det;
-        const M3 inv{{ia, ib, -(ia * prev_g2i.m[2] + ib * prev_g2i.m[5]), ic, id, -(ic * prev_g2i.m[2] + id * prev_g2i.m[5]), 0, 0, 1}};
+        const M3 inv{{ia, ib, -(ia * prev_g2i.m[2] + ib * prev_g2i.m[5]), ic, id,
+                      -(ic * prev_g2i.m[2] + id * prev_g2i.m[5]), 0, 0, 1}};
         const M3 hd = mul(g2i, inv);
         prev_g2i = g2i;
         FrameGeometry g;
@@ -441,19 +470,24 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
                 rule = rule_bad_geometry;
             } else {
                 // So near the threshold that float rounding decides: either frame is right.
-                const bool borderline = std::fabs(area * s2 - 1) < 1e-4 || std::fabs(area / s2 - 1) < 1e-4;
-                if (borderline ? e.state == TargetState::lost : area < 1 / s2 || area > s2) rule = rule_scale;
+                const bool borderline =
+                    std::fabs(area * s2 - 1) < 1e-4 || std::fabs(area / s2 - 1) < 1e-4;
+                if (borderline ? e.state == TargetState::lost : area < 1 / s2 || area > s2)
+                    rule = rule_scale;
             }
             if (rule >= 0) lost = true;
         }
         if (!geometry_ok) trusted = false;
         if (accepted) {
             if (unseen > 0) {
-                if (e.state != TargetState::reacquired) fail(k, words("not reacquired (%s) on the first frame back", target_state_name(e.state)));
+                if (e.state != TargetState::reacquired)
+                    fail(k, words("not reacquired (%s) on the first frame back",
+                                  target_state_name(e.state)));
                 ++res.reacquired;
                 res.longest_unseen = std::max(res.longest_unseen, unseen);
             } else if (e.state != TargetState::measured) {
-                fail(k, words("measurement refused (%s, D_nds %.3f)", target_state_name(e.state), static_cast<double>(e.nds)));
+                fail(k, words("measurement refused (%s, D_nds %.3f)", target_state_name(e.state),
+                              static_cast<double>(e.nds)));
             }
             unseen = 0;
             if (e.reset) ref_scale = cam.s;
@@ -461,22 +495,29 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
         if (lost && !was_lost) {
             ++res.lost_events;
             ++res.lost_by_rule[rule];
-            if (e.state == TargetState::lost) ++res.lost_on_time;
-            else fail(k, words("not lost (%s) in the frame the rule names (unseen %u, bad run %u)", target_state_name(e.state), unseen, bad_run));
+            if (e.state == TargetState::lost)
+                ++res.lost_on_time;
+            else
+                fail(k, words("not lost (%s) in the frame the rule names (unseen %u, bad run %u)",
+                              target_state_name(e.state), unseen, bad_run));
         } else if (lost && e.state != TargetState::lost) {
             fail(k, words("came back (%s) from lost without init", target_state_name(e.state)));
         } else if (!lost && e.state == TargetState::lost) {
-            fail(k, words("lost early (unseen %u, bad run %u, area %.4f)", unseen, bad_run, (cam.s / ref_scale) * (cam.s / ref_scale)));
+            fail(k, words("lost early (unseen %u, bad run %u, area %.4f)", unseen, bad_run,
+                          (cam.s / ref_scale) * (cam.s / ref_scale)));
             lost = true;
         }
         if (!lost && trusted) {
-            const double err = std::hypot(static_cast<double>(e.x) - aim.x, static_cast<double>(e.y) - aim.y);
+            const double err =
+                std::hypot(static_cast<double>(e.x) - aim.x, static_cast<double>(e.y) - aim.y);
             res.worst_error_px = std::max(res.worst_error_px, err);
             if (!visible) res.worst_error_outside_px = std::max(res.worst_error_outside_px, err);
-            if (err > cfg.error_tolerance_px) fail(k, words("estimate %.3f px from the truth", err));
+            if (err > cfg.error_tolerance_px)
+                fail(k, words("estimate %.3f px from the truth", err));
         }
         if (!visible) {
-            const double out = std::max({-0.5 - aim.x, aim.x - (w - 0.5), -0.5 - aim.y, aim.y - (h - 0.5)});
+            const double out =
+                std::max({-0.5 - aim.x, aim.x - (w - 0.5), -0.5 - aim.y, aim.y - (h - 0.5)});
             res.farthest_outside_px = std::max(res.farthest_outside_px, out);
         }
         res.frames = frame;
@@ -485,7 +526,8 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
     int kind = 0;
     while (frame < cfg.frames) {
         // Start (again) on the vehicle where it is.
-        tracker.init(static_cast<float>(cam.aim.x), static_cast<float>(cam.aim.y), cfg.width, cfg.height, tp);
+        tracker.init(static_cast<float>(cam.aim.x), static_cast<float>(cam.aim.y), cfg.width,
+                     cfg.height, tp);
         unseen = bad_run = 0;
         ref_scale = cam.s;
         lost = false;
@@ -493,7 +535,10 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
         ++res.cycles;
         // In view, wandering about the centre, measured.
         const double wx = scene::uniform(rng, 0, 2 * kPi), wy = scene::uniform(rng, 0, 2 * kPi);
-        auto wander = [&](uint32_t i) { return P{centre.x + 15 * std::sin(i / 40.0 + wx), centre.y + 10 * std::sin(i / 50.0 + wy)}; };
+        auto wander = [&](uint32_t i) {
+            return P{centre.x + 15 * std::sin(i / 40.0 + wx),
+                     centre.y + 10 * std::sin(i / 50.0 + wy)};
+        };
         const uint32_t view = 40 + rng.below(120);
         for (uint32_t i = 0; i < view && frame < cfg.frames; ++i) step(wander(i), 1, true, 0);
         // The spell: out through a random side to `depth` px beyond the border, held, back.
@@ -502,13 +547,16 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
         const double reach = std::min(std::fabs(d.x) > 1e-9 ? (w / 2) / std::fabs(d.x) : 1e9,
                                       std::fabs(d.y) > 1e-9 ? (h / 2) / std::fabs(d.y) : 1e9);
         const double depth = scene::uniform(rng, 20, 100);
-        const P start = wander(view), far{centre.x + d.x * (reach + depth), centre.y + d.y * (reach + depth)};
+        const P start = wander(view),
+                far{centre.x + d.x * (reach + depth), centre.y + d.y * (reach + depth)};
         const uint32_t ramp = 60;
         const SpellKind sk = static_cast<SpellKind>(kind++ % 4);
         ++res.spells[sk];
         uint32_t hold = 0;
         switch (sk) {
-            case drift: hold = 1 + rng.below(tp.max_unseen > ramp + 11 ? tp.max_unseen - ramp - 10 : 1u); break;
+            case drift:
+                hold = 1 + rng.below(tp.max_unseen > ramp + 11 ? tp.max_unseen - ramp - 10 : 1u);
+                break;
             case unseen_kind: hold = tp.max_unseen + rng.below(100); break;
             case bad_geometry_kind: hold = 150; break;
             case scale_kind: hold = 150; break;
@@ -520,8 +568,9 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
         auto smooth = [](double t) { return t * t * (3 - 2 * t); };
         for (uint32_t i = 0; i < 2 * ramp + hold && frame < cfg.frames; ++i) {
             const double t = i < ramp ? smooth(i / static_cast<double>(ramp))
-                           : i < ramp + hold ? 1.0
-                           : smooth(1 - (i - ramp - hold) / static_cast<double>(ramp));
+                             : i < ramp + hold
+                                 ? 1.0
+                                 : smooth(1 - (i - ramp - hold) / static_cast<double>(ramp));
             const P home = i < ramp + hold ? start : wander(view + i);
             const P aim{home.x + t * (far.x - home.x), home.y + t * (far.y - home.y)};
             const bool holding = i >= ramp && i < ramp + hold;
@@ -547,7 +596,8 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
             step(aim, z, !holding, geometry);
         }
         // Back in view and offered: lost stays lost; a live track is reacquired.
-        for (uint32_t i = 0; i < 20 && frame < cfg.frames; ++i) step(wander(view + 2 * ramp + hold + i), 1, true, 0);
+        for (uint32_t i = 0; i < 20 && frame < cfg.frames; ++i)
+            step(wander(view + 2 * ramp + hold + i), 1, true, 0);
     }
     return res;
 }

@@ -1,10 +1,11 @@
-// Long runs of the two trackers on generated input (issue 8, "hostile input and long runs"):
-// the loops and the rules they check, shared by the test command's short soak runs
-// (tests/system/test_soak.cpp) and the soak bench (platform/bench/bench_soak.cpp: --frames, --seeds), which
-// bench.sh builds with ASan + UBSan so that an overflow or any undefined behaviour aborts the
-// run. Host only (heap, double); no images: the trackers' inputs are generated directly.
+// Long runs of the two trackers on generated input (what a device sees in days of use): the
+// loops and the rules they check, shared by the test command's short soak runs
+// (tests/system/test_soak.cpp) and the soak bench (platform/bench/bench_soak.cpp: --frames,
+// --seeds), which bench.sh builds with ASan + UBSan so that an overflow or any undefined behaviour
+// aborts the run. Host only (heap, double); no images: the trackers' inputs are generated directly.
 //
-// Quadrangle tracker (core/tracking/quad_tracker.h). A 4:3 board moves and turns smoothly in a 640 × 480
+// Quadrangle tracker (core/tracking/quad_tracker.h). A 4:3 board moves and turns smoothly in a 640
+// × 480
 // frame; each frame its four sides become lines the way the lines stage reports them (ends 10 %
 // short of the corners, Gaussian noise on every end, the board's polarity, shuffled), each side
 // missed independently with probability miss_rate, and now and then a burst of total loss
@@ -27,11 +28,13 @@
 //     that frame's detection; otherwise every side is within its gate and is matched, pulled onto
 //     its line (within 2 px with this noise), in that frame.
 //
-// Target tracker (core/target/float/target_tracker.h), driven directly with synthetic homographies whose
+// Target tracker (core/target/float/target_tracker.h), driven directly with synthetic homographies
+// whose
 // truth is exact: a nadir-looking camera (a similarity between ground and image: scale, turn,
 // shift) follows a vehicle driving straight at constant speed, so in the tracker's reference
 // image the vehicle moves at constant velocity and the fused estimate A·x̂ is exact in exact
-// arithmetic once the filter's velocity has settled. Cycles of: init on the vehicle, frames in view with exact measurements, then a
+// arithmetic once the filter's velocity has settled. Cycles of: init on the vehicle, frames in view
+// with exact measurements, then a
 // spell without measurements (the camera swings the vehicle out of the image and back) of one
 // of four kinds: a drift spell (no longer than max_unseen), an unseen spell (longer), a
 // bad-geometry spell (runs of frames whose homography failed or is untrustworthy: flat or
@@ -40,7 +43,8 @@
 // the inputs alone: lost exactly in the frame the rule names (unseen > max_unseen, more than
 // max_bad_geometry untrustworthy homographies in a row while unseen, A's area factor at the
 // estimate outside [1/max_scale², max_scale²], which for a similarity is (s_now / s_ref)² with
-// s_ref the scale at init or at the last reset the tracker reports) and never before; lost until init(); while the
+// s_ref the scale at init or at the last reset the tracker reports) and never before; lost until
+// init(); while the
 // homographies are trusted, |estimate − truth| <= error_tolerance_px; a measurement offered while
 // the track is not lost is accepted (reacquired on the first frame back in view). The error has
 // two sources only: the filter's lag while its velocity settles after init (the first update
@@ -52,8 +56,8 @@
 
 #include <string>
 
-#include "tracking/line_tracker.h"
 #include "target/float/target_tracker.h"
+#include "tracking/line_tracker.h"
 
 namespace qt::soak {
 
@@ -72,7 +76,8 @@ struct VarianceBound {
     double pos = 0;  // px²
     double vel = 0;  // px²/frame²
 };
-VarianceBound cv_variance_bound(double q, double r, double p0_pos, double p0_vel, int max_gap, int age);
+VarianceBound cv_variance_bound(double q, double r, double p0_pos, double p0_vel, int max_gap,
+                                int age);
 
 // ---- quadrangle tracker ---------------------------------------------------------------------
 
@@ -84,24 +89,24 @@ struct QuadSoakConfig {
     uint32_t gap_min = 100, gap_max = 500;        // frames between bursts of total loss
     uint32_t burst_min = 1, burst_max = 40;       // frames of a burst (no line at all)
     double end_noise_px = 0.3;                    // σ of the noise on each line end, px
-    double recovery_tolerance_px = 2.0;           // recovered: every corner within this of the truth
+    double recovery_tolerance_px = 2.0;  // recovered: every corner within this of the truth
 };
 
 struct QuadSoakResult {
     uint32_t frames = 0;
-    uint32_t bursts = 0, long_bursts = 0;   // long: more than max_predicted frames
-    uint32_t full_frames = 0;               // frames showing all four sides
+    uint32_t bursts = 0, long_bursts = 0;  // long: more than max_predicted frames
+    uint32_t full_frames = 0;              // frames showing all four sides
     uint32_t tracks_started = 0;
-    uint32_t lost[5] = {};                  // tracks lost, by QuadTrackLost reason (index 0 unused)
-    uint32_t lost_outside_bursts = 0;       // losses away from bursts and their recovery (not a rule:
-                                            //   the tracker's own "price", a side predicted beyond the
-                                            //   gate until it is given up; 0 for the paper's model here)
+    uint32_t lost[5] = {};             // tracks lost, by QuadTrackLost reason (index 0 unused)
+    uint32_t lost_outside_bursts = 0;  // losses away from bursts and their recovery (not a rule:
+                                       //   the tracker's own "price", a side predicted beyond the
+                                       //   gate until it is given up; 0 for the paper's model here)
     uint32_t untracked_outside_bursts = 0;  // frames without a track after such a loss
     uint32_t worst_recovery = 0;            // frames from a burst's end to the recovery
-    uint32_t worst_wait_full = 0;           // frames from a burst's end to the first frame with all sides
-    uint32_t recovered_at_burst_end = 0;    // bursts recovered in their first frame back
-    uint32_t recovered_after_whole = 0;     // bursts recovered only after the first frame showing all
-                                            //   four sides after them (allowed up to the rule's frame)
+    uint32_t worst_wait_full = 0;  // frames from a burst's end to the first frame with all sides
+    uint32_t recovered_at_burst_end = 0;  // bursts recovered in their first frame back
+    uint32_t recovered_after_whole = 0;   // bursts recovered only after the first frame showing all
+        //   four sides after them (allowed up to the rule's frame)
     // Covariances of the checked filter axes (px² and px²/frame²; deg², deg²/frame² for the turn
     // model's angle), largest seen in tracks at least max_predicted + 1 frames old and the bound
     // there, and the same for younger tracks (whose sides may not have been updated yet).
@@ -110,10 +115,12 @@ struct QuadSoakResult {
     double max_vel_variance = 0, vel_variance_bound = 0;
     double max_pos_variance_young = 0, pos_variance_bound_young = 0;
     double max_vel_variance_young = 0, vel_variance_bound_young = 0;
-    double max_offset_variance = 0;         // turn model: largest P00 of the offset filter, px² (no bound stated)
-    double worst_error_tracking = 0;        // px, worst corner error in frames not within a burst's recovery
-    uint32_t breaks = 0;                    // frames or bursts breaking a checked rule
-    std::string first_break;                // the first one, in words (empty if none)
+    double max_offset_variance =
+        0;  // turn model: largest P00 of the offset filter, px² (no bound stated)
+    double worst_error_tracking =
+        0;                    // px, worst corner error in frames not within a burst's recovery
+    uint32_t breaks = 0;      // frames or bursts breaking a checked rule
+    std::string first_break;  // the first one, in words (empty if none)
 };
 
 QuadSoakResult run_quad_soak(const QuadSoakConfig& config);
@@ -133,16 +140,16 @@ enum TargetLostRule : uint8_t { rule_unseen = 0, rule_bad_geometry = 1, rule_sca
 struct TargetSoakResult {
     uint32_t frames = 0;
     uint32_t cycles = 0;
-    uint32_t spells[4] = {};          // by kind: drift, unseen, bad geometry, scale
+    uint32_t spells[4] = {};  // by kind: drift, unseen, bad geometry, scale
     uint32_t lost_events = 0;
-    uint32_t lost_by_rule[3] = {};    // TargetLostRule
-    uint32_t lost_on_time = 0;        // lost in exactly the frame the rule names
-    uint32_t reacquired = 0;          // returns from a drift spell, reacquired on the first frame back
-    uint32_t longest_unseen = 0;      // frames without a measurement before a reacquisition
-    double worst_error_px = 0;        // while the homographies were trusted and the track not lost
+    uint32_t lost_by_rule[3] = {};  // TargetLostRule
+    uint32_t lost_on_time = 0;      // lost in exactly the frame the rule names
+    uint32_t reacquired = 0;      // returns from a drift spell, reacquired on the first frame back
+    uint32_t longest_unseen = 0;  // frames without a measurement before a reacquisition
+    double worst_error_px = 0;    // while the homographies were trusted and the track not lost
     double worst_error_outside_px = 0;  // the same, while the target's centre was outside the image
-    double farthest_outside_px = 0;   // how far outside the image the target went, px
-    uint32_t breaks = 0;              // frames breaking a checked rule
+    double farthest_outside_px = 0;     // how far outside the image the target went, px
+    uint32_t breaks = 0;                // frames breaking a checked rule
     std::string first_break;
 };
 

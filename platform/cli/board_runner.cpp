@@ -9,7 +9,8 @@ bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectR
     result = DetectResult{};
     result.width = static_cast<uint16_t>(frame.width);
     result.height = static_cast<uint16_t>(frame.height);
-    if (frame.width <= 0 || frame.height <= 0 || frame.width > kMaxFrameWidth || frame.height > kMaxFrameHeight) {
+    if (frame.width <= 0 || frame.height <= 0 || frame.width > kMaxFrameWidth ||
+        frame.height > kMaxFrameHeight) {
         result.status = Status::bad_size;
         return false;
     }

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "quads/board_detector.h"
 #include "io/grey_image.h"
+#include "quads/board_detector.h"
 
 namespace qt::cli {
 

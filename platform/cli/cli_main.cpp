@@ -6,11 +6,12 @@
 
 #include <vector>
 
-#include "demo/demo.h"
 #include "cli/detect_command.h"
 #include "cli/homography_command.h"
 #include "cli/target_command.h"
 #include "cli/track_command.h"
+#include "demo/demo.h"
+#include "io/error_line.h"
 
 namespace {
 
@@ -46,7 +47,7 @@ const char* kUsage =
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fputs(kUsage, stderr);
+        qt::io::print_error_line(stderr, "quadtrack: no command given (see quadtrack --help)");
         return 2;
     }
     const std::string command = argv[1];
@@ -54,23 +55,29 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, stdout);
         return 0;
     }
-    if (command == "detect") return qt::cli::run_detect(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
-    if (command == "track") return qt::cli::run_track(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
-    if (command == "homography") return qt::cli::run_homography(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
-    if (command == "target") return qt::cli::run_target(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
+    if (command == "detect")
+        return qt::cli::run_detect(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
+    if (command == "track")
+        return qt::cli::run_track(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
+    if (command == "homography")
+        return qt::cli::run_homography(std::vector<std::string>(argv + 2, argv + argc), stdout,
+                                       stderr);
+    if (command == "target")
+        return qt::cli::run_target(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
     if (command == "demo") {
         std::string out = "demo_out";
         for (int i = 2; i < argc; ++i) {
             if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
                 out = argv[++i];
             } else {
-                std::fprintf(stderr, "quadtrack demo: unknown option '%s' (see quadtrack --help)\n",
-                             argv[i]);
+                qt::io::print_error_line(
+                    stderr, "quadtrack demo: unknown option '%s' (see quadtrack --help)", argv[i]);
                 return 2;
             }
         }
         return qt::cli::run_demo(out);
     }
-    std::fprintf(stderr, "quadtrack: unknown command '%s' (see quadtrack --help)\n", command.c_str());
+    qt::io::print_error_line(stderr, "quadtrack: unknown command '%s' (see quadtrack --help)",
+                             command.c_str());
     return 2;
 }

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "cli/board_runner.h"
-#include "io/error_line.h"
 #include "cli/flag_table.h"
 #include "cli/parse_number.h"
+#include "io/error_line.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -61,16 +61,15 @@ Option integer(const char* name, const char* value, const char* help, long lo, l
 
 Option decimal(const char* name, const char* value, const char* help, double lo, double hi,
                std::function<q16_16&(DetectOptions&)> field) {
-    return {name, value, help,
-            [field](DetectOptions o) { return show_q16(field(o)); },
+    return {name, value, help, [field](DetectOptions o) { return show_q16(field(o)); },
             [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
                 return parse_q16(t, lo, hi, field(o), e);
             }};
 }
 
-Option degrees(const char* name, const char* help, double lo, double hi, std::function<angle_t&(DetectOptions&)> field) {
-    return {name, "DEG", help,
-            [field](DetectOptions o) { return show_deg(field(o)); },
+Option degrees(const char* name, const char* help, double lo, double hi,
+               std::function<angle_t&(DetectOptions&)> field) {
+    return {name, "DEG", help, [field](DetectOptions o) { return show_deg(field(o)); },
             [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
                 q16_16 deg;
                 if (!parse_q16(t, lo, hi, deg, e)) return false;
@@ -81,137 +80,240 @@ Option degrees(const char* name, const char* help, double lo, double hi, std::fu
 
 const FlagTable<DetectOptions, Command>& table() {
     // Command::detect: every command's; track_only(): track's only.
-    static const FlagTable<DetectOptions, Command> options{{
-        integer<uint16_t>("edge-threshold", "LEVEL", "edge pixel: L1 gradient magnitude |gx|+|gy| at least this, grey levels, 1..510", 1, 510,
-                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.edge_threshold; }),
-        integer<uint16_t>("theta-bins", "N", "Hough accumulator angle bins over 180 degrees (90 = 2 degrees each), 2..90", 2, 90,
-                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.theta_bins; }),
-        {"rho", "PX", "Hough accumulator distance resolution, pixels: 2 or 4 (the VGA build's accumulator has no room for 1)",
-         [](DetectOptions o) { return std::to_string(o.params.lines.hough.rho_step); },
-         [](const std::string& t, DetectOptions& o, std::string& e) {
-             long v = 0;
-             if (!parse_int(t, 2, 4, v, e)) return false;
-             if (v == 3) {
-                 e = "3 is not 2 or 4";
-                 return false;
-             }
-             o.params.lines.hough.rho_step = static_cast<uint16_t>(v);
-             return true;
-         }},
-        integer<uint16_t>("threshold", "VOTES", "PPHT vote threshold: votes a bin needs before its line is followed, 1..255", 1, 255,
-                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.threshold; }),
-        integer<uint16_t>("min-line-length", "PX", "PPHT minimum line length, pixels, 2..2048", 2, 2048,
-                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.min_line_length; }),
-        integer<uint16_t>("max-gap", "PX", "PPHT maximum gap inside a line, pixels, 0..255", 0, 255,
-                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_line_gap; }),
-        integer<uint16_t>("vote-window", "DEG", "a point votes for normals within +-DEG of its gradient direction, degrees, 1..90 (90 = all)", 1, 90,
-                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.vote_window_deg; }),
-        integer<uint16_t>("corridor", "PX", "PPHT line following: pixels either side of the line searched, 0..4", 0, 4,
-                          [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.corridor; }),
-        integer<uint32_t>("max-walk-steps", "N", "PPHT line-following budget per frame, steps, 1..100000000", 1, 100000000,
-                          [](DetectOptions& o) -> uint32_t& { return o.params.lines.hough.max_walk_steps; }),
-        integer<uint64_t>("seed", "N", "PPHT visiting order seed, 0..2147483647", 0, 2147483647,
-                          [](DetectOptions& o) -> uint64_t& { return o.params.lines.hough.seed; }),
-        decimal("cluster-distance", "PX", "clustering similarity threshold S(li,lj) = |Ci - Cj|, pixels, 0..1000", 0, 1000,
-                [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.distance; }),
-        degrees("cluster-angle", "clustering: largest orientation difference of merged lines, degrees, 0..90", 0, 90,
-                [](DetectOptions& o) -> angle_t& { return o.params.lines.cluster.max_angle; }),
-        decimal("cluster-gap", "PX", "clustering: largest gap between merged segments along the line, pixels, 0..2048", 0, 2048,
-                [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.gap; }),
-        decimal("cluster-offset", "PX", "clustering: ends of the shorter segment at most this far from the longer one's line, pixels, 0..1000", 0, 1000,
-                [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.offset; }),
-        decimal("corner-join-distance", "PX", "line ends move to the lines' intersection when at most this far from it, pixels, 0..100", 0, 100,
+    static const FlagTable<DetectOptions, Command> options{
+        {
+            integer<uint16_t>(
+                "edge-threshold", "LEVEL",
+                "edge pixel: L1 gradient magnitude |gx|+|gy| at least this, grey levels, 1..510", 1,
+                510, [](DetectOptions& o) -> uint16_t& { return o.params.lines.edge_threshold; }),
+            integer<uint16_t>(
+                "theta-bins", "N",
+                "Hough accumulator angle bins over 180 degrees (90 = 2 degrees each), 2..90", 2, 90,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.theta_bins; }),
+            {"rho", "PX",
+             "Hough accumulator distance resolution, pixels: 2 or 4 (the VGA build's accumulator "
+             "has no room for 1)",
+             [](DetectOptions o) { return std::to_string(o.params.lines.hough.rho_step); },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 long v = 0;
+                 if (!parse_int(t, 2, 4, v, e)) return false;
+                 if (v == 3) {
+                     e = "3 is not 2 or 4";
+                     return false;
+                 }
+                 o.params.lines.hough.rho_step = static_cast<uint16_t>(v);
+                 return true;
+             }},
+            integer<uint16_t>(
+                "threshold", "VOTES",
+                "PPHT vote threshold: votes a bin needs before its line is followed, 1..255", 1,
+                255, [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.threshold; }),
+            integer<uint16_t>(
+                "min-line-length", "PX", "PPHT minimum line length, pixels, 2..2048", 2, 2048,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.min_line_length; }),
+            integer<uint16_t>(
+                "max-gap", "PX", "PPHT maximum gap inside a line, pixels, 0..255", 0, 255,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_line_gap; }),
+            integer<uint16_t>(
+                "vote-window", "DEG",
+                "a point votes for normals within +-DEG of its gradient direction, degrees, 1..90 "
+                "(90 = all)",
+                1, 90,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.vote_window_deg; }),
+            integer<uint16_t>(
+                "corridor", "PX",
+                "PPHT line following: pixels either side of the line searched, 0..4", 0, 4,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.corridor; }),
+            integer<uint32_t>(
+                "max-walk-steps", "N", "PPHT line-following budget per frame, steps, 1..100000000",
+                1, 100000000,
+                [](DetectOptions& o) -> uint32_t& { return o.params.lines.hough.max_walk_steps; }),
+            integer<uint64_t>(
+                "seed", "N", "PPHT visiting order seed, 0..2147483647", 0, 2147483647,
+                [](DetectOptions& o) -> uint64_t& { return o.params.lines.hough.seed; }),
+            decimal("cluster-distance", "PX",
+                    "clustering similarity threshold S(li,lj) = |Ci - Cj|, pixels, 0..1000", 0,
+                    1000,
+                    [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.distance; }),
+            degrees("cluster-angle",
+                    "clustering: largest orientation difference of merged lines, degrees, 0..90", 0,
+                    90,
+                    [](DetectOptions& o) -> angle_t& { return o.params.lines.cluster.max_angle; }),
+            decimal(
+                "cluster-gap", "PX",
+                "clustering: largest gap between merged segments along the line, pixels, 0..2048",
+                0, 2048, [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.gap; }),
+            decimal("cluster-offset", "PX",
+                    "clustering: ends of the shorter segment at most this far from the longer "
+                    "one's line, pixels, 0..1000",
+                    0, 1000,
+                    [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.offset; }),
+            decimal(
+                "corner-join-distance", "PX",
+                "line ends move to the lines' intersection when at most this far from it, pixels, "
+                "0..100",
+                0, 100,
                 [](DetectOptions& o) -> q16_16& { return o.params.lines.corners.max_distance; }),
-        degrees("corner-join-angle", "line ends are joined only for lines at least this far from parallel, degrees, 0..90", 0, 90,
-                [](DetectOptions& o) -> angle_t& { return o.params.lines.corners.min_angle; }),
-        degrees("parallel-tolerance", "rule 1: largest angle between opposite sides, degrees, 0..45", 0, 45,
-                [](DetectOptions& o) -> angle_t& { return o.params.quads.parallel_tolerance; }),
-        degrees("perpendicular-tolerance", "rule 2: largest deviation of adjacent sides from 90 degrees, degrees, 0..60", 0, 60,
-                [](DetectOptions& o) -> angle_t& { return o.params.quads.perpendicular_tolerance; }),
-        decimal("corner-margin", "PX", "rule 3: corners at least this far inside the frame, pixels, 0..1000", 0, 1000,
-                [](DetectOptions& o) -> q16_16& { return o.params.quads.corner_margin; }),
-        decimal("min-side", "PX", "rule 4: shortest side, pixels, 0..2048 (0: a tenth of the frame height)", 0, 2048,
-                [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_length; }),
-        decimal("max-side", "PX", "rule 4: longest side, pixels, 1..2048", 1, 2048,
-                [](DetectOptions& o) -> q16_16& { return o.params.quads.max_side_length; }),
-        decimal("aspect-tolerance", "FACTOR", "rule 5: largest factor between the side ratio and the display's, 1..10", 1, 10,
-                [](DetectOptions& o) -> q16_16& { return o.params.quads.aspect_tolerance; }),
-        decimal("min-coverage", "FRACTION", "each side covered by its line's segment at least this much, 0..1", 0, 1,
-                [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_coverage; }),
-        decimal("min-score", "FRACTION", "the four sides together covered at least this share of the perimeter, 0..1", 0, 1,
-                [](DetectOptions& o) -> q16_16& { return o.params.quads.min_score; }),
-        decimal("collinear-distance", "PX", "lines with both ends this close to a side's line also cover it, pixels, 0..100", 0, 100,
-                [](DetectOptions& o) -> q16_16& { return o.params.quads.collinear_distance; }),
-        {"contrast", "bright|dark|any", "the board is brighter (or darker) than its surroundings on every side, or either",
-         [](DetectOptions o) {
-             return std::string(o.params.quads.contrast == Contrast::bright_board ? "bright"
-                                : o.params.quads.contrast == Contrast::dark_board ? "dark" : "any");
-         },
-         [](const std::string& t, DetectOptions& o, std::string& e) {
-             if (t == "bright") o.params.quads.contrast = Contrast::bright_board;
-             else if (t == "dark") o.params.quads.contrast = Contrast::dark_board;
-             else if (t == "any") o.params.quads.contrast = Contrast::any;
-             else {
-                 e = "'" + t + "' is not bright, dark or any";
-                 return false;
-             }
-             return true;
-         }},
-        {"display", "WxH", "display area in display pixels: its aspect W/H is rule 5's ratio, and the display homography maps it, 1..4096 each",
-         [](DetectOptions o) { return std::to_string(o.display_width) + "x" + std::to_string(o.display_height); },
-         [](const std::string& t, DetectOptions& o, std::string& e) {
-             const size_t x = t.find('x');
-             long w = 0, h = 0;
-             if (x == std::string::npos) {
-                 e = "'" + t + "' is not WxH";
-                 return false;
-             }
-             if (!parse_int(t.substr(0, x), 1, 4096, w, e) || !parse_int(t.substr(x + 1), 1, 4096, h, e)) return false;
-             o.display_width = static_cast<uint16_t>(w);
-             o.display_height = static_cast<uint16_t>(h);
-             o.params.quads.display_aspect = q16_16::from_ratio(w, h);
-             return true;
-         }},
-        {"complete-hidden-side", "yes|no", "a side hidden along most of its length is completed from its two neighbours",
-         [](DetectOptions o) { return std::string(o.params.quads.complete_hidden_side ? "yes" : "no"); },
-         [](const std::string& t, DetectOptions& o, std::string& e) { return parse_yes_no(t, o.params.quads.complete_hidden_side, e); }},
-        decimal("refine-band", "PX", "side refinement: edge points within this of a side, first pass, pixels, 0.5..8", 0.5, 8,
-                [](DetectOptions& o) -> q16_16& { return o.params.refine.band; }),
-        decimal("refine-fine-band", "PX", "side refinement: the same, second pass, pixels, 0.5..8", 0.5, 8,
-                [](DetectOptions& o) -> q16_16& { return o.params.refine.fine_band; }),
-        {"verify", "yes|no", "keep only quadrangles whose sides show edge evidence (the --*-evidence limits)",
-         [](DetectOptions o) { return std::string(o.params.refine.verify ? "yes" : "no"); },
-         [](const std::string& t, DetectOptions& o, std::string& e) { return parse_yes_no(t, o.params.refine.verify, e); }},
-        integer<uint8_t>("side-evidence", "PERCENT", "each side: edge evidence along at least this share of it, %, 0..100", 0, 100,
-                         [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_side_evidence_percent; }),
-        integer<uint8_t>("hidden-side-evidence", "PERCENT", "a completed side: edge evidence along at least this share of it, %, 0..100", 0, 100,
-                         [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_hidden_side_evidence_percent; }),
-        integer<uint8_t>("evidence", "PERCENT", "the four sides together: edge evidence along at least this share, %, 0..100", 0, 100,
-                         [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_evidence_percent; }),
-        integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1, HostBoardDetector::max_quads(),
-                          [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
-        // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
-        track_only({"model", "paper|turn", "line tracker per side: paper = the paper's N Kalman filters on closest points, "
-                    "turn = angle with turn rate and bent offset (line_tracker.h)",
-                    [](DetectOptions o) { return std::string(o.track.model == LineModel::turn ? "turn" : "paper"); },
-                    [](const std::string& t, DetectOptions& o, std::string& e) {
-                        if (t == "paper") o.track.model = LineModel::closest_points;
-                        else if (t == "turn") o.track.model = LineModel::turn;
-                        else {
-                            e = "'" + t + "' is not paper or turn";
-                            return false;
-                        }
-                        return true;
-                    }}),
-        track_only(integer<uint8_t>("filters", "N", "paper model: Kalman filters per line, each on its own origin, 1..3 (3 = 3KF)", 1, 3,
-                                    [](DetectOptions& o) -> uint8_t& { return o.track.filters; })),
-        track_only(degrees("gate-angle", "a detected line serves a tracked side only within this angle of its prediction, degrees, 0..90", 0, 90,
-                           [](DetectOptions& o) -> angle_t& { return o.track.gate_angle; })),
-        track_only(decimal("gate-distance", "PX", "a detected line serves a tracked side only with both ends within this distance of its prediction, pixels, 0..1000", 0, 1000,
-                           [](DetectOptions& o) -> q16_16& { return o.track.gate_distance; })),
-        track_only(integer<uint8_t>("max-predicted", "N", "a side may be predicted this many frames in a row before the track is dropped, frames, 0..255", 0, 255,
-                                    [](DetectOptions& o) -> uint8_t& { return o.track.max_predicted; })),
-    }, Command::detect, 34};
+            degrees("corner-join-angle",
+                    "line ends are joined only for lines at least this far from parallel, degrees, "
+                    "0..90",
+                    0, 90,
+                    [](DetectOptions& o) -> angle_t& { return o.params.lines.corners.min_angle; }),
+            degrees("parallel-tolerance",
+                    "rule 1: largest angle between opposite sides, degrees, 0..45", 0, 45,
+                    [](DetectOptions& o) -> angle_t& { return o.params.quads.parallel_tolerance; }),
+            degrees("perpendicular-tolerance",
+                    "rule 2: largest deviation of adjacent sides from 90 degrees, degrees, 0..60",
+                    0, 60,
+                    [](DetectOptions& o) -> angle_t& {
+                        return o.params.quads.perpendicular_tolerance;
+                    }),
+            decimal("corner-margin", "PX",
+                    "rule 3: corners at least this far inside the frame, pixels, 0..1000", 0, 1000,
+                    [](DetectOptions& o) -> q16_16& { return o.params.quads.corner_margin; }),
+            decimal("min-side", "PX",
+                    "rule 4: shortest side, pixels, 0..2048 (0: a tenth of the frame height)", 0,
+                    2048,
+                    [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_length; }),
+            decimal("max-side", "PX", "rule 4: longest side, pixels, 1..2048", 1, 2048,
+                    [](DetectOptions& o) -> q16_16& { return o.params.quads.max_side_length; }),
+            decimal("aspect-tolerance", "FACTOR",
+                    "rule 5: largest factor between the side ratio and the display's, 1..10", 1, 10,
+                    [](DetectOptions& o) -> q16_16& { return o.params.quads.aspect_tolerance; }),
+            decimal("min-coverage", "FRACTION",
+                    "each side covered by its line's segment at least this much, 0..1", 0, 1,
+                    [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_coverage; }),
+            decimal("min-score", "FRACTION",
+                    "the four sides together covered at least this share of the perimeter, 0..1", 0,
+                    1, [](DetectOptions& o) -> q16_16& { return o.params.quads.min_score; }),
+            decimal(
+                "collinear-distance", "PX",
+                "lines with both ends this close to a side's line also cover it, pixels, 0..100", 0,
+                100, [](DetectOptions& o) -> q16_16& { return o.params.quads.collinear_distance; }),
+            {"contrast", "bright|dark|any",
+             "the board is brighter (or darker) than its surroundings on every side, or either",
+             [](DetectOptions o) {
+                 return std::string(o.params.quads.contrast == Contrast::bright_board ? "bright"
+                                    : o.params.quads.contrast == Contrast::dark_board ? "dark"
+                                                                                      : "any");
+             },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 if (t == "bright")
+                     o.params.quads.contrast = Contrast::bright_board;
+                 else if (t == "dark")
+                     o.params.quads.contrast = Contrast::dark_board;
+                 else if (t == "any")
+                     o.params.quads.contrast = Contrast::any;
+                 else {
+                     e = "'" + t + "' is not bright, dark or any";
+                     return false;
+                 }
+                 return true;
+             }},
+            {"display", "WxH",
+             "display area in display pixels: its aspect W/H is rule 5's ratio, and the display "
+             "homography maps it, 1..4096 each",
+             [](DetectOptions o) {
+                 return std::to_string(o.display_width) + "x" + std::to_string(o.display_height);
+             },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 const size_t x = t.find('x');
+                 long w = 0, h = 0;
+                 if (x == std::string::npos) {
+                     e = "'" + t + "' is not WxH";
+                     return false;
+                 }
+                 if (!parse_int(t.substr(0, x), 1, 4096, w, e) ||
+                     !parse_int(t.substr(x + 1), 1, 4096, h, e))
+                     return false;
+                 o.display_width = static_cast<uint16_t>(w);
+                 o.display_height = static_cast<uint16_t>(h);
+                 o.params.quads.display_aspect = q16_16::from_ratio(w, h);
+                 return true;
+             }},
+            {"complete-hidden-side", "yes|no",
+             "a side hidden along most of its length is completed from its two neighbours",
+             [](DetectOptions o) {
+                 return std::string(o.params.quads.complete_hidden_side ? "yes" : "no");
+             },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 return parse_yes_no(t, o.params.quads.complete_hidden_side, e);
+             }},
+            decimal(
+                "refine-band", "PX",
+                "side refinement: edge points within this of a side, first pass, pixels, 0.5..8",
+                0.5, 8, [](DetectOptions& o) -> q16_16& { return o.params.refine.band; }),
+            decimal("refine-fine-band", "PX",
+                    "side refinement: the same, second pass, pixels, 0.5..8", 0.5, 8,
+                    [](DetectOptions& o) -> q16_16& { return o.params.refine.fine_band; }),
+            {"verify", "yes|no",
+             "keep only quadrangles whose sides show edge evidence (the --*-evidence limits)",
+             [](DetectOptions o) { return std::string(o.params.refine.verify ? "yes" : "no"); },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 return parse_yes_no(t, o.params.refine.verify, e);
+             }},
+            integer<uint8_t>("side-evidence", "PERCENT",
+                             "each side: edge evidence along at least this share of it, %, 0..100",
+                             0, 100,
+                             [](DetectOptions& o) -> uint8_t& {
+                                 return o.params.refine.min_side_evidence_percent;
+                             }),
+            integer<uint8_t>(
+                "hidden-side-evidence", "PERCENT",
+                "a completed side: edge evidence along at least this share of it, %, 0..100", 0,
+                100,
+                [](DetectOptions& o) -> uint8_t& {
+                    return o.params.refine.min_hidden_side_evidence_percent;
+                }),
+            integer<uint8_t>(
+                "evidence", "PERCENT",
+                "the four sides together: edge evidence along at least this share, %, 0..100", 0,
+                100,
+                [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_evidence_percent; }),
+            integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1,
+                              HostBoardDetector::max_quads(),
+                              [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
+            // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
+            track_only(
+                {"model", "paper|turn",
+                 "line tracker per side: paper = the paper's N Kalman filters on closest points, "
+                 "turn = angle with turn rate and bent offset (line_tracker.h)",
+                 [](DetectOptions o) {
+                     return std::string(o.track.model == LineModel::turn ? "turn" : "paper");
+                 },
+                 [](const std::string& t, DetectOptions& o, std::string& e) {
+                     if (t == "paper")
+                         o.track.model = LineModel::closest_points;
+                     else if (t == "turn")
+                         o.track.model = LineModel::turn;
+                     else {
+                         e = "'" + t + "' is not paper or turn";
+                         return false;
+                     }
+                     return true;
+                 }}),
+            track_only(integer<uint8_t>(
+                "filters", "N",
+                "paper model: Kalman filters per line, each on its own origin, 1..3 (3 = 3KF)", 1,
+                3, [](DetectOptions& o) -> uint8_t& { return o.track.filters; })),
+            track_only(degrees("gate-angle",
+                               "a detected line serves a tracked side only within this angle of "
+                               "its prediction, degrees, 0..90",
+                               0, 90,
+                               [](DetectOptions& o) -> angle_t& { return o.track.gate_angle; })),
+            track_only(decimal("gate-distance", "PX",
+                               "a detected line serves a tracked side only with both ends within "
+                               "this distance of its prediction, pixels, 0..1000",
+                               0, 1000,
+                               [](DetectOptions& o) -> q16_16& { return o.track.gate_distance; })),
+            track_only(integer<uint8_t>(
+                "max-predicted", "N",
+                "a side may be predicted this many frames in a row before the track is dropped, "
+                "frames, 0..255",
+                0, 255, [](DetectOptions& o) -> uint8_t& { return o.track.max_predicted; })),
+        },
+        Command::detect,
+        34};
     return options;
 }
 
@@ -232,8 +334,9 @@ DetectOptions::DetectOptions() {
 
 std::string options_help(Command command) { return table().help(command); }
 
-int parse_command_line(const std::vector<std::string>& args, Command command, const std::string& usage,
-                       DetectOptions& options, std::string& positional, std::FILE* out, std::FILE* err) {
+int parse_command_line(const std::vector<std::string>& args, Command command,
+                       const std::string& usage, DetectOptions& options, std::string& positional,
+                       std::FILE* out, std::FILE* err) {
     const char* name = command == Command::detect ? "detect" : "track";
     const char* what = command == Command::detect ? "image" : "sequence";
     const char* what_upper = command == Command::detect ? "IMAGE" : "SEQUENCE";
@@ -242,12 +345,13 @@ int parse_command_line(const std::vector<std::string>& args, Command command, co
     const int parsed = table().parse(args, command, name, usage, options, given, out, err);
     if (parsed >= 0) return parsed;
     if (given.size() > 1) {
-        qt::io::print_error_line(err, "quadtrack %s: one %s only, got '%s' and '%s'", name, what, given[0].c_str(),
-                                 given[1].c_str());
+        qt::io::print_error_line(err, "quadtrack %s: one %s only, got '%s' and '%s'", name, what,
+                                 given[0].c_str(), given[1].c_str());
         return 2;
     }
     if (given.empty()) {
-        qt::io::print_error_line(err, "quadtrack %s: no %s given (see quadtrack %s --help)", name, what_upper, name);
+        qt::io::print_error_line(err, "quadtrack %s: no %s given (see quadtrack %s --help)", name,
+                                 what_upper, name);
         return 2;
     }
     if (options.params.quads.min_side_length > options.params.quads.max_side_length) {

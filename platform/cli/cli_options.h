@@ -20,8 +20,8 @@ enum class Command { detect, track };
 // The QuadTrackerParams a user sets (the rest follows the frame size, see run_track).
 struct TrackOptions {
     LineModel model = LineModel::closest_points;
-    uint8_t filters = 3;       // closest_points filters, 1..3
-    angle_t gate_angle = 0;    // defaults from QuadTrackerParams (see the constructor)
+    uint8_t filters = 3;     // closest_points filters, 1..3
+    angle_t gate_angle = 0;  // defaults from QuadTrackerParams (see the constructor)
     q16_16 gate_distance = {};
     uint8_t max_predicted = 0;
 
@@ -31,8 +31,8 @@ struct TrackOptions {
 struct DetectOptions {
     BoardParams params;
     uint16_t display_width = 1024, display_height = 768;  // display pixels (rule 5, homography)
-    uint16_t max_quads = 4;                                // quadrangles reported, 1..4
-    TrackOptions track;                                    // track only
+    uint16_t max_quads = 4;                               // quadrangles reported, 1..4
+    TrackOptions track;                                   // track only
 
     DetectOptions();  // params.quads.display_aspect follows the display size
 };
@@ -44,7 +44,8 @@ std::string options_help(Command command = Command::detect);
 // or --name=VALUE, and exactly one positional argument (detect's IMAGE, track's SEQUENCE) into
 // `positional`. Returns -1 when the command should run; otherwise the exit status after
 // printing: 0 after `usage` on `out` for --help/-h, 2 after one error line on `err`.
-int parse_command_line(const std::vector<std::string>& args, Command command, const std::string& usage,
-                       DetectOptions& options, std::string& positional, std::FILE* out, std::FILE* err);
+int parse_command_line(const std::vector<std::string>& args, Command command,
+                       const std::string& usage, DetectOptions& options, std::string& positional,
+                       std::FILE* out, std::FILE* err);
 
 }  // namespace qt::cli

@@ -10,10 +10,13 @@ namespace qt::cli {
 
 std::string detect_usage() {
     return "usage: quadtrack detect IMAGE [OPTIONS]\n"
-           "  IMAGE is a PGM (P5), PPM (P6, converted to grey) or Y4M file (first frame's Y plane),\n"
-           "  at most " + std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
+           "  IMAGE is a PGM (P5), PPM (P6, converted to grey) or Y4M file (first frame's Y "
+           "plane),\n"
+           "  at most " +
+           std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
            " pixels. Prints one JSON object on stdout (see README, \"quadtrack detect\").\n"
-           "options (--name VALUE or --name=VALUE):\n" + options_help();
+           "options (--name VALUE or --name=VALUE):\n" +
+           options_help();
 }
 
 bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, DetectResult& result,
@@ -35,7 +38,8 @@ bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, Dete
 int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     DetectOptions options;
     std::string path, error;
-    const int parsed = parse_command_line(args, Command::detect, detect_usage(), options, path, out, err);
+    const int parsed =
+        parse_command_line(args, Command::detect, detect_usage(), options, path, out, err);
     if (parsed >= 0) return parsed;
 
     io::GreyImage frame;
@@ -48,7 +52,8 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         qt::io::print_error_line(err, "quadtrack detect: %s: %s", path.c_str(), error.c_str());
         return 1;
     }
-    std::fprintf(out, "%s\n", detect_json(result, options.display_width, options.display_height).c_str());
+    std::fprintf(out, "%s\n",
+                 detect_json(result, options.display_width, options.display_height).c_str());
     return 0;
 }
 

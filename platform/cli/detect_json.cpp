@@ -29,8 +29,9 @@ void homography(std::string& out, const Point16 (&corners)[4], uint16_t w, uint1
         return;
     }
     const double r20 = 1.0 / (1 << 20), r16 = 1.0 / 65536, r30 = 1.0 / (1 << 30);
-    const double e[9] = {m.a.raw * r20, m.b.raw * r20, m.c.raw * r16, m.d.raw * r20, m.e.raw * r20,
-                         m.f.raw * r16, m.g.raw * r30, m.h.raw * r30, 1.0};
+    const double e[9] = {m.a.raw * r20, m.b.raw * r20, m.c.raw * r16,
+                         m.d.raw * r20, m.e.raw * r20, m.f.raw * r16,
+                         m.g.raw * r30, m.h.raw * r30, 1.0};
     out += "[";
     for (int i = 0; i < 9; ++i) {
         out += i % 3 == 0 ? (i == 0 ? "[" : "],[") : ",";

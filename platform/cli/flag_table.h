@@ -7,16 +7,16 @@
 #include <string>
 #include <vector>
 
-#include "io/error_line.h"
 #include "cli/parse_number.h"
+#include "io/error_line.h"
 
 namespace qt::cli {
 
 template <class Options, class Command>
 struct Flag {
     const char* name;
-    const char* value;  // placeholder in the help
-    const char* help;   // with unit and range
+    const char* value;                         // placeholder in the help
+    const char* help;                          // with unit and range
     std::function<std::string(Options)> show;  // the value in a copy of the options
     std::function<bool(const std::string&, Options&, std::string&)> set;  // parse, check, store
     Command command{};  // the one command it serves, or the table's `every`
@@ -51,8 +51,9 @@ struct FlagTable {
     // into `positional` in order; --help or -h prints `usage` on `out`. Returns -1 when the
     // command should run, 0 after the usage, 2 after one error line "quadtrack NAME: ..." on
     // `err` (an unknown flag, a missing or bad value).
-    int parse(const std::vector<std::string>& args, Command c, const char* name, const std::string& usage,
-              Options& options, std::vector<std::string>& positional, std::FILE* out, std::FILE* err) const {
+    int parse(const std::vector<std::string>& args, Command c, const char* name,
+              const std::string& usage, Options& options, std::vector<std::string>& positional,
+              std::FILE* out, std::FILE* err) const {
         positional.clear();
         for (size_t i = 0; i < args.size(); ++i) {
             const std::string& a = args[i];
@@ -72,20 +73,23 @@ struct FlagTable {
             }
             const Flag<Options, Command>* f = find(flag, c);
             if (f == nullptr) {
-                qt::io::print_error_line(err, "quadtrack %s: unknown option '--%s' (see quadtrack %s --help)", name,
-                                         flag.c_str(), name);
+                qt::io::print_error_line(
+                    err, "quadtrack %s: unknown option '--%s' (see quadtrack %s --help)", name,
+                    flag.c_str(), name);
                 return 2;
             }
             if (eq == std::string::npos) {
                 if (i + 1 == args.size()) {
-                    qt::io::print_error_line(err, "quadtrack %s: %s needs a value", name, a.c_str());
+                    qt::io::print_error_line(err, "quadtrack %s: %s needs a value", name,
+                                             a.c_str());
                     return 2;
                 }
                 value = args[++i];
             }
             std::string why;
             if (!f->set(value, options, why)) {
-                qt::io::print_error_line(err, "quadtrack %s: --%s: %s", name, flag.c_str(), why.c_str());
+                qt::io::print_error_line(err, "quadtrack %s: --%s: %s", name, flag.c_str(),
+                                         why.c_str());
                 return 2;
             }
         }
@@ -95,9 +99,11 @@ struct FlagTable {
 
 // An integer flag in [lo, hi] stored in an unsigned field of type T.
 template <typename T, class Options, class Command>
-Flag<Options, Command> integer_flag(const char* name, const char* value, const char* help, long lo, long hi,
-                                    std::function<T&(Options&)> field, Command command) {
-    return {name, value, help,
+Flag<Options, Command> integer_flag(const char* name, const char* value, const char* help, long lo,
+                                    long hi, std::function<T&(Options&)> field, Command command) {
+    return {name,
+            value,
+            help,
             [field](Options o) { return std::to_string(field(o)); },
             [field, lo, hi](const std::string& t, Options& o, std::string& e) {
                 long v = 0;

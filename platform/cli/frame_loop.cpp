@@ -30,8 +30,9 @@ int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
             width = frame.width;
             height = frame.height;
         } else if (frame.width != width || frame.height != height) {
-            qt::io::print_error_line(err, "quadtrack %s: %s: frame %d is %d x %d, the sequence started at %d x %d", command,
-                                     spec.c_str(), k, frame.width, frame.height, width, height);
+            qt::io::print_error_line(
+                err, "quadtrack %s: %s: frame %d is %d x %d, the sequence started at %d x %d",
+                command, spec.c_str(), k, frame.width, frame.height, width, height);
             return 1;
         }
         const int status = body(k, frame);

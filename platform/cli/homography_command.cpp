@@ -2,15 +2,16 @@
 
 #include <memory>
 
+#include "cli/target_json.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
-#include "cli/target_json.h"
 
 namespace qt::cli {
 
 std::string homography_usage() {
     return "usage: quadtrack homography A B [OPTIONS]\n"
-           "  A and B are PGM/PPM/Y4M frames of at most 640 x 480 pixels (the first frame of a Y4M).\n"
+           "  A and B are PGM/PPM/Y4M frames of at most 640 x 480 pixels (the first frame of a "
+           "Y4M).\n"
            "  Prints {\"H\",\"inliers\",\"matches\",...}: H maps A's pixels into B (see README,\n"
            "  \"quadtrack homography\").\n"
            "options (--name VALUE or --name=VALUE):\n" +
@@ -23,8 +24,8 @@ using Detector = HarrisDetector<640, 160>;
 using Features = FeatureSet<4, 160>;
 
 // Reads one image and finds its corners; false with one line in `error`.
-bool corners_of(const std::string& path, const HarrisConfig& config, Detector& detector, Features& out,
-                std::string& error) {
+bool corners_of(const std::string& path, const HarrisConfig& config, Detector& detector,
+                Features& out, std::string& error) {
     io::GreyImage image;
     if (!io::read_image(path, image, error)) return false;
     if (image.width > 640 || image.height > 480) {
@@ -32,9 +33,9 @@ bool corners_of(const std::string& path, const HarrisConfig& config, Detector& d
                 " is above the 640 x 480 capacity";
         return false;
     }
-    const Status s = detect_features(detector, image.pixels.data(), static_cast<uint16_t>(image.width),
-                                     static_cast<uint16_t>(image.height), static_cast<uint32_t>(image.width),
-                                     config, out);
+    const Status s = detect_features(
+        detector, image.pixels.data(), static_cast<uint16_t>(image.width),
+        static_cast<uint16_t>(image.height), static_cast<uint32_t>(image.width), config, out);
     if (s != Status::ok && s != Status::capacity_exceeded) {
         error = path + ": " + status_name(s);
         return false;
@@ -47,8 +48,8 @@ bool corners_of(const std::string& path, const HarrisConfig& config, Detector& d
 int run_homography(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     TargetOptions options;
     std::vector<std::string> files;
-    const int parsed = parse_target_command_line(args, GeometryCommand::homography, homography_usage(), options,
-                                                 files, out, err);
+    const int parsed = parse_target_command_line(args, GeometryCommand::homography,
+                                                 homography_usage(), options, files, out, err);
     if (parsed >= 0) return parsed;
     // About 90 KB of detector and corners: on the heap, not the stack.
     auto detector = std::make_unique<Detector>();

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <functional>
 
-#include "io/error_line.h"
 #include "cli/flag_table.h"
 #include "cli/parse_number.h"
+#include "io/error_line.h"
 
 namespace qt::cli {
 
@@ -21,8 +21,11 @@ std::string show_float(double v) {
 
 // A flag of `target` only unless `command` says homography (then both commands').
 Option real(const char* name, const char* value, const char* help, double lo, double hi,
-            std::function<float&(TargetOptions&)> field, GeometryCommand command = GeometryCommand::target) {
-    return {name, value, help,
+            std::function<float&(TargetOptions&)> field,
+            GeometryCommand command = GeometryCommand::target) {
+    return {name,
+            value,
+            help,
             [field](TargetOptions o) { return show_float(field(o)); },
             [field, lo, hi](const std::string& t, TargetOptions& o, std::string& e) {
                 double v = 0;
@@ -35,13 +38,17 @@ Option real(const char* name, const char* value, const char* help, double lo, do
 
 template <typename T>
 Option integer(const char* name, const char* value, const char* help, long lo, long hi,
-               std::function<T&(TargetOptions&)> field, GeometryCommand command = GeometryCommand::target) {
+               std::function<T&(TargetOptions&)> field,
+               GeometryCommand command = GeometryCommand::target) {
     return integer_flag<T, TargetOptions>(name, value, help, lo, hi, field, command);
 }
 
 // A score -1..1 stored as Q15.
-Option score_q15(const char* name, const char* help, std::function<int16_t&(TargetOptions&)> field) {
-    return {name, "NCC", help,
+Option score_q15(const char* name, const char* help,
+                 std::function<int16_t&(TargetOptions&)> field) {
+    return {name,
+            "NCC",
+            help,
             [field](TargetOptions o) { return show_float(field(o) / 32768.0); },
             [field](const std::string& t, TargetOptions& o, std::string& e) {
                 double v = 0;
@@ -81,69 +88,99 @@ bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
 
 // GeometryCommand::homography: both commands' flags; GeometryCommand::target: target's only.
 const FlagTable<TargetOptions, GeometryCommand>& table() {
-    static const FlagTable<TargetOptions, GeometryCommand> options{{
-        {"roi", "X,Y,W,H", "the target's box in frame 0: top-left pixel and size, px (W, H 1..24)",
-         [](TargetOptions o) {
-             return o.roi_set ? std::to_string(o.roi_x) + "," + std::to_string(o.roi_y) + "," +
-                                    std::to_string(o.roi_w) + "," + std::to_string(o.roi_h)
-                              : std::string("none, required");
-         },
-         parse_roi, GeometryCommand::target},
-        {"method", "NAME", "fused (the paper's method), filter_only, homography_only or template_only",
-         [](TargetOptions o) { return std::string(target_method_name(o.config.tracker.method)); },
-         [](const std::string& t, TargetOptions& o, std::string& e) {
-             for (TargetMethod m : {TargetMethod::fused, TargetMethod::filter_only, TargetMethod::homography_only,
-                                    TargetMethod::template_only})
-                 if (t == target_method_name(m)) {
-                     o.config.tracker.method = m;
-                     return true;
-                 }
-             e = "'" + t + "' is not fused, filter_only, homography_only or template_only";
-             return false;
-         },
-         GeometryCommand::target},
-        {"reset", "on|off", "Table III's reset of the accumulated homography when the target is found again",
-         [](TargetOptions o) { return std::string(o.config.tracker.reset ? "on" : "off"); },
-         [](const std::string& t, TargetOptions& o, std::string& e) {
-             if (t != "on" && t != "off") {
-                 e = "'" + t + "' is not on or off";
+    static const FlagTable<TargetOptions, GeometryCommand> options{
+        {
+            {"roi", "X,Y,W,H",
+             "the target's box in frame 0: top-left pixel and size, px (W, H 1..24)",
+             [](TargetOptions o) {
+                 return o.roi_set ? std::to_string(o.roi_x) + "," + std::to_string(o.roi_y) + "," +
+                                        std::to_string(o.roi_w) + "," + std::to_string(o.roi_h)
+                                  : std::string("none, required");
+             },
+             parse_roi, GeometryCommand::target},
+            {"method", "NAME",
+             "fused (the paper's method), filter_only, homography_only or template_only",
+             [](TargetOptions o) {
+                 return std::string(target_method_name(o.config.tracker.method));
+             },
+             [](const std::string& t, TargetOptions& o, std::string& e) {
+                 for (TargetMethod m : {TargetMethod::fused, TargetMethod::filter_only,
+                                        TargetMethod::homography_only, TargetMethod::template_only})
+                     if (t == target_method_name(m)) {
+                         o.config.tracker.method = m;
+                         return true;
+                     }
+                 e = "'" + t + "' is not fused, filter_only, homography_only or template_only";
                  return false;
-             }
-             o.config.tracker.reset = t == "on";
-             return true;
-         },
-         GeometryCommand::target},
-        real("q-pos", "PX2", "Kalman Q's position variance per frame, px^2, 0..10000",
-             0, 10000, [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_pos; }),
-        real("q-vel", "PX2", "Kalman Q's velocity variance per frame, (px/frame)^2, 0..1000",
-             0, 1000, [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_vel; }),
-        real("r", "PX2", "Kalman R: template match variance, px^2, 0.01..10000",
-             0.01, 10000, [](TargetOptions& o) -> float& { return o.config.tracker.kalman.r; }),
-        real("gate-nds", "D", "NDS gate of equation (6): a match is used when D_nds <= this, 0.01..1e6",
-             0.01, 1e6, [](TargetOptions& o) -> float& { return o.config.tracker.gate_nds; }),
-        real("gate-rep", "PX", "reprojection gate of equation (7): homography trusted when its RMS error <= this, px, 0.01..100",
-             0.01, 100, [](TargetOptions& o) -> float& { return o.config.tracker.gate_rep_px; }),
-        real("reset-nds", "D", "reset when D_nds <= this ..., 0..1e6",
-             0, 1e6, [](TargetOptions& o) -> float& { return o.config.tracker.reset_nds; }),
-        real("reset-det-s", "PX4", "... and det S <= this, px^4, 0..1e12",
-             0, 1e12, [](TargetOptions& o) -> float& { return o.config.tracker.reset_det_s; }),
-        real("min-score", "NCC", "a template match counts when its NCC >= this, -1..1",
-             -1, 1, [](TargetOptions& o) -> float& { return o.config.tracker.min_score; }),
-        real("max-radius", "PX", "largest search window half-side around the prediction, px, 1..48",
-             1, 48, [](TargetOptions& o) -> float& { return o.config.tracker.max_radius_px; }),
-        integer<uint16_t>("max-unseen", "FRAMES", "lost after this many frames without a match, 1..65535",
-                          1, 65535, [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
-        integer<uint16_t>("search-radius", "PX", "corner matching: candidates within this of the expected position, px, 1..128",
-                          1, 128, [](TargetOptions& o) -> uint16_t& { return o.config.geometry.match.search_radius_px; }, GeometryCommand::homography),
-        score_q15("min-match", "corner matching: least NCC of a match, -1..1",
-                  [](TargetOptions& o) -> int16_t& { return o.config.geometry.match.min_score_q15; }),
-        real("inlier-px", "PX", "RANSAC inlier threshold on the transfer error, px, 0.05..50",
-             0.05, 50, [](TargetOptions& o) -> float& { return o.config.geometry.ransac.inlier_px; }, GeometryCommand::homography),
-        integer<uint16_t>("max-iterations", "N", "RANSAC hypotheses at most, 1..65535",
-                          1, 65535, [](TargetOptions& o) -> uint16_t& { return o.config.geometry.ransac.max_iterations; }, GeometryCommand::homography),
-        integer<uint64_t>("seed", "N", "RANSAC's PRNG seed, 0..2^31-1",
-                          0, 2147483647L, [](TargetOptions& o) -> uint64_t& { return o.config.geometry.ransac.seed; }, GeometryCommand::homography),
-    }, GeometryCommand::homography, 28};
+             },
+             GeometryCommand::target},
+            {"reset", "on|off",
+             "Table III's reset of the accumulated homography when the target is found again",
+             [](TargetOptions o) { return std::string(o.config.tracker.reset ? "on" : "off"); },
+             [](const std::string& t, TargetOptions& o, std::string& e) {
+                 if (t != "on" && t != "off") {
+                     e = "'" + t + "' is not on or off";
+                     return false;
+                 }
+                 o.config.tracker.reset = t == "on";
+                 return true;
+             },
+             GeometryCommand::target},
+            real("q-pos", "PX2", "Kalman Q's position variance per frame, px^2, 0..10000", 0, 10000,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_pos; }),
+            real("q-vel", "PX2", "Kalman Q's velocity variance per frame, (px/frame)^2, 0..1000", 0,
+                 1000, [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_vel; }),
+            real("r", "PX2", "Kalman R: template match variance, px^2, 0.01..10000", 0.01, 10000,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.kalman.r; }),
+            real("gate-nds", "D",
+                 "NDS gate of equation (6): a match is used when D_nds <= this, 0.01..1e6", 0.01,
+                 1e6, [](TargetOptions& o) -> float& { return o.config.tracker.gate_nds; }),
+            real("gate-rep", "PX",
+                 "reprojection gate of equation (7): homography trusted when its RMS error <= "
+                 "this, px, 0.01..100",
+                 0.01, 100,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.gate_rep_px; }),
+            real("reset-nds", "D", "reset when D_nds <= this ..., 0..1e6", 0, 1e6,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.reset_nds; }),
+            real("reset-det-s", "PX4", "... and det S <= this, px^4, 0..1e12", 0, 1e12,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.reset_det_s; }),
+            real("min-score", "NCC", "a template match counts when its NCC >= this, -1..1", -1, 1,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.min_score; }),
+            real("max-radius", "PX",
+                 "largest search window half-side around the prediction, px, 1..48", 1, 48,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.max_radius_px; }),
+            integer<uint16_t>(
+                "max-unseen", "FRAMES", "lost after this many frames without a match, 1..65535", 1,
+                65535, [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
+            integer<uint16_t>(
+                "search-radius", "PX",
+                "corner matching: candidates within this of the expected position, px, 1..128", 1,
+                128,
+                [](TargetOptions& o) -> uint16_t& {
+                    return o.config.geometry.match.search_radius_px;
+                },
+                GeometryCommand::homography),
+            score_q15(
+                "min-match", "corner matching: least NCC of a match, -1..1",
+                [](TargetOptions& o) -> int16_t& { return o.config.geometry.match.min_score_q15; }),
+            real(
+                "inlier-px", "PX", "RANSAC inlier threshold on the transfer error, px, 0.05..50",
+                0.05, 50,
+                [](TargetOptions& o) -> float& { return o.config.geometry.ransac.inlier_px; },
+                GeometryCommand::homography),
+            integer<uint16_t>(
+                "max-iterations", "N", "RANSAC hypotheses at most, 1..65535", 1, 65535,
+                [](TargetOptions& o) -> uint16_t& {
+                    return o.config.geometry.ransac.max_iterations;
+                },
+                GeometryCommand::homography),
+            integer<uint64_t>(
+                "seed", "N", "RANSAC's PRNG seed, 0..2^31-1", 0, 2147483647L,
+                [](TargetOptions& o) -> uint64_t& { return o.config.geometry.ransac.seed; },
+                GeometryCommand::homography),
+        },
+        GeometryCommand::homography,
+        28};
     return options;
 }
 
@@ -163,16 +200,18 @@ std::string target_options_help(GeometryCommand command) { return table().help(c
 
 int parse_target_command_line(const std::vector<std::string>& args, GeometryCommand command,
                               const std::string& usage, TargetOptions& options,
-                              std::vector<std::string>& positional, std::FILE* out, std::FILE* err) {
+                              std::vector<std::string>& positional, std::FILE* out,
+                              std::FILE* err) {
     const bool target = command == GeometryCommand::target;
     const char* name = target ? "target" : "homography";
     const int parsed = table().parse(args, command, name, usage, options, positional, out, err);
     if (parsed >= 0) return parsed;
     const size_t wanted = target ? 1 : 2;
     if (positional.size() != wanted) {
-        qt::io::print_error_line(err, "quadtrack %s: expected %s, got %zu argument%s (see quadtrack %s --help)", name,
-                                 target ? "one SEQUENCE" : "two images A B", positional.size(),
-                                 positional.size() == 1 ? "" : "s", name);
+        qt::io::print_error_line(
+            err, "quadtrack %s: expected %s, got %zu argument%s (see quadtrack %s --help)", name,
+            target ? "one SEQUENCE" : "two images A B", positional.size(),
+            positional.size() == 1 ? "" : "s", name);
         return 2;
     }
     if (target && !options.roi_set) {

@@ -17,8 +17,8 @@ using CliTargetPipeline = TargetPipeline<640, 160, 4, 24, 160>;
 enum class GeometryCommand { homography, target };
 
 struct TargetOptions {
-    TargetPipelineConfig config;  // defaults: default_target_config()
-    bool roi_set = false;         // target: --roi is required
+    TargetPipelineConfig config;                     // defaults: default_target_config()
+    bool roi_set = false;                            // target: --roi is required
     int roi_x = 0, roi_y = 0, roi_w = 0, roi_h = 0;  // px, frame 0
     TargetOptions();
 };

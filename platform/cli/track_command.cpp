@@ -2,8 +2,8 @@
 
 #include "cli/detect_command.h"
 #include "cli/detect_json.h"
-#include "io/error_line.h"
 #include "cli/frame_loop.h"
+#include "io/error_line.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -12,11 +12,14 @@ std::string track_usage() {
     return "usage: quadtrack track SEQUENCE [OPTIONS]\n"
            "  SEQUENCE is a Y4M file (every frame's Y plane), a printf pattern of PGM/PPM files\n"
            "  (frames/f%03d.pgm: numbered from 0, or 1, to the first missing number) or one\n"
-           "  PGM/PPM file; every frame the same size, at most " + std::to_string(kMaxFrameWidth) + " x " +
-           std::to_string(kMaxFrameHeight) + " pixels.\n"
-           "  Each frame is detected as by quadtrack detect, then the quadrangle tracker carries the\n"
+           "  PGM/PPM file; every frame the same size, at most " +
+           std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
+           " pixels.\n"
+           "  Each frame is detected as by quadtrack detect, then the quadrangle tracker carries "
+           "the\n"
            "  board: one JSON line per frame on stdout (see README, \"quadtrack track\").\n"
-           "options (--name VALUE or --name=VALUE):\n" + options_help(Command::track);
+           "options (--name VALUE or --name=VALUE):\n" +
+           options_help(Command::track);
 }
 
 namespace {
@@ -39,7 +42,8 @@ QuadTrackerParams tracker_params(const DetectOptions& o, uint16_t width, uint16_
 int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     DetectOptions options;
     std::string spec;
-    const int parsed = parse_command_line(args, Command::track, track_usage(), options, spec, out, err);
+    const int parsed =
+        parse_command_line(args, Command::track, track_usage(), options, spec, out, err);
     if (parsed >= 0) return parsed;
 
     QuadTracker tracker;
@@ -50,13 +54,15 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         DetectResult result;
         std::string error;
         if (!detect_frame(frame, options, result, error)) {
-            qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", spec.c_str(), k, error.c_str());
+            qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", spec.c_str(), k,
+                                     error.c_str());
             return 1;
         }
-        const TrackedQuad t = tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
-                                           result.quads.data(), static_cast<uint16_t>(result.quads.size()));
-        const std::string line = track_json(k, result, t, tracker.stats().lost_reason, options.display_width,
-                                            options.display_height);
+        const TrackedQuad t =
+            tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
+                         result.quads.data(), static_cast<uint16_t>(result.quads.size()));
+        const std::string line = track_json(k, result, t, tracker.stats().lost_reason,
+                                            options.display_width, options.display_height);
         std::fprintf(out, "%s\n", line.c_str());
         std::fflush(out);
         return 0;

@@ -5,13 +5,14 @@
 #include <filesystem>
 #include <vector>
 
-#include "scene/board_scene.h"
 #include "demo/demo_sequence.h"
-#include "io/image_io.h"
 #include "gradient/gradient_stage.h"
-#include "lines/line_detector.h"
+#include "io/error_line.h"
+#include "io/image_io.h"
 #include "io/overlay.h"
 #include "io/png_writer.h"
+#include "lines/line_detector.h"
+#include "scene/board_scene.h"
 
 namespace qt::cli {
 
@@ -24,11 +25,10 @@ void direction_colour(uint32_t bin, int level, uint8_t* rgb) {
     const int hue = static_cast<int>(bin) * 360 / 16;  // degrees
     const int sector = hue / 60, f = (hue % 60) * 255 / 60;
     const int up = f, down = 255 - f;
-    const int table[6][3] = {{255, up, 0}, {down, 255, 0}, {0, 255, up},
-                             {0, down, 255}, {up, 0, 255}, {255, 0, down}};
+    const int table[6][3] = {{255, up, 0},   {down, 255, 0}, {0, 255, up},
+                             {0, down, 255}, {up, 0, 255},   {255, 0, down}};
     for (int c = 0; c < 3; ++c) rgb[c] = static_cast<uint8_t>(table[sector][c] * level / 255);
 }
-
 
 }  // namespace
 
@@ -36,7 +36,7 @@ bool save_demo_picture(const std::string& path, int width, int height, int chann
                        const std::vector<uint8_t>& pixels) {
     std::string error;
     if (!io::write_png(path, width, height, channels, pixels, error)) {
-        std::fprintf(stderr, "quadtrack demo: %s\n", error.c_str());
+        qt::io::print_error_line(stderr, "quadtrack demo: %s", error.c_str());
         return false;
     }
     std::printf("wrote %s\n", path.c_str());
@@ -47,8 +47,8 @@ int run_demo(const std::string& out_dir) {
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) {
-        std::fprintf(stderr, "quadtrack demo: cannot create %s: %s\n", out_dir.c_str(),
-                     ec.message().c_str());
+        qt::io::print_error_line(stderr, "quadtrack demo: cannot create %s: %s", out_dir.c_str(),
+                                 ec.message().c_str());
         return 1;
     }
     const io::GreyImage frame = scene::render_board(scene::default_board_scene());
@@ -80,7 +80,7 @@ int run_demo(const std::string& out_dir) {
     for (int y = 0; y < h && s == Status::ok; ++y)
         s = stage.push_row(frame.row(y), static_cast<uint16_t>(w), sink);
     if (s != Status::ok) {
-        std::fprintf(stderr, "quadtrack demo: gradient stage: %s\n", status_name(s));
+        qt::io::print_error_line(stderr, "quadtrack demo: gradient stage: %s", status_name(s));
         return 1;
     }
 
@@ -92,10 +92,11 @@ int run_demo(const std::string& out_dir) {
     std::printf("\n");
     std::string error;
     if (!io::write_pgm(out_dir + "/input.pgm", frame, error)) {
-        std::fprintf(stderr, "quadtrack demo: %s\n", error.c_str());
+        qt::io::print_error_line(stderr, "quadtrack demo: %s", error.c_str());
         return 1;
     }
-    std::printf("wrote %s/input.pgm (try: quadtrack detect %s/input.pgm)\n", out_dir.c_str(), out_dir.c_str());
+    std::printf("wrote %s/input.pgm (try: quadtrack detect %s/input.pgm)\n", out_dir.c_str(),
+                out_dir.c_str());
     bool ok = save_demo_picture(out_dir + "/input.png", w, h, 1, frame.pixels) &&
               save_demo_picture(out_dir + "/gradient_magnitude.png", w, h, 1, magnitude) &&
               save_demo_picture(out_dir + "/gradient_direction.png", w, h, 3, direction);
@@ -103,30 +104,35 @@ int run_demo(const std::string& out_dir) {
     // Lines stage: edges (blue), PPHT segments (yellow), clustered lines (red).
     static LineDetectorVga lines;  // 86 KB: static, as firmware would keep it
     s = lines.begin_frame(static_cast<uint16_t>(w), static_cast<uint16_t>(h), LineParams{});
-    for (int y = 0; y < h && s == Status::ok; ++y) s = lines.push_row(frame.row(y), static_cast<uint16_t>(w));
+    for (int y = 0; y < h && s == Status::ok; ++y)
+        s = lines.push_row(frame.row(y), static_cast<uint16_t>(w));
     if (s == Status::ok) s = lines.finish();
     if (s != Status::ok) {
-        std::fprintf(stderr, "quadtrack demo: lines stage: %s\n", status_name(s));
+        qt::io::print_error_line(stderr, "quadtrack demo: lines stage: %s", status_name(s));
         return 1;
     }
     io::RgbImage overlay = io::RgbImage::from_grey(frame, 50);
     const EdgeList& edges = lines.edges();
     for (uint16_t i = 0; i < edges.size(); ++i)
-        overlay.set(static_cast<int>(ep::x(edges[i])), static_cast<int>(ep::y(edges[i])), {60, 120, 255});
+        overlay.set(static_cast<int>(ep::x(edges[i])), static_cast<int>(ep::y(edges[i])),
+                    {60, 120, 255});
     auto draw = [&](const Segment& l, io::Rgb c) {
-        overlay.line(l.x1.raw / 65536.0, l.y1.raw / 65536.0, l.x2.raw / 65536.0, l.y2.raw / 65536.0, c);
+        overlay.line(l.x1.raw / 65536.0, l.y1.raw / 65536.0, l.x2.raw / 65536.0, l.y2.raw / 65536.0,
+                     c);
     };
     for (uint16_t i = 0; i < lines.segment_count(); ++i) draw(lines.segments()[i], {255, 230, 0});
     for (uint16_t i = 0; i < lines.line_count(); ++i) draw(lines.lines()[i], {255, 40, 40});
     const LineStats& st = lines.stats();
-    std::printf("lines stage (fixed point, %u B of RAM at VGA): %u edge points, %u PPHT segments, "
-                "%u lines after clustering\n",
-                LineDetectorVga::ram_bytes(), st.edges, lines.segment_count(), lines.line_count());
+    std::printf(
+        "lines stage (fixed point, %u B of RAM at VGA): %u edge points, %u PPHT segments, "
+        "%u lines after clustering\n",
+        LineDetectorVga::ram_bytes(), st.edges, lines.segment_count(), lines.line_count());
     for (uint16_t i = 0; i < lines.line_count(); ++i) {
         const Segment& l = lines.lines()[i];
-        std::printf("  line %u: (%.2f, %.2f) - (%.2f, %.2f)  rho %.2f px  theta %.2f deg  %u points\n", i,
-                    l.x1.raw / 65536.0, l.y1.raw / 65536.0, l.x2.raw / 65536.0, l.y2.raw / 65536.0,
-                    l.rho.raw / 65536.0, angle_to_deg(l.theta).raw / 65536.0, l.points);
+        std::printf(
+            "  line %u: (%.2f, %.2f) - (%.2f, %.2f)  rho %.2f px  theta %.2f deg  %u points\n", i,
+            l.x1.raw / 65536.0, l.y1.raw / 65536.0, l.x2.raw / 65536.0, l.y2.raw / 65536.0,
+            l.rho.raw / 65536.0, angle_to_deg(l.theta).raw / 65536.0, l.points);
     }
     ok = ok && save_demo_picture(out_dir + "/lines.png", w, h, 3, overlay.pixels);
     ok = ok && run_demo_sequence(out_dir);

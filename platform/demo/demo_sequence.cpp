@@ -4,9 +4,10 @@
 #include <cstdio>
 
 #include "cli/board_runner.h"
-#include "scene/board_sequence.h"
+#include "io/error_line.h"
 #include "io/overlay.h"
 #include "io/png_writer.h"
+#include "scene/board_sequence.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -25,7 +26,8 @@ void side_line(io::RgbImage& pic, Point16 a, Point16 b, io::Rgb colour, bool das
     for (double t = 0; t < len; t += period) {
         const double e = std::fmin(t + on, len);
         for (double o : {-0.5, 0.5})
-            pic.line(x1 + ux * t - uy * o, y1 + uy * t + ux * o, x1 + ux * e - uy * o, y1 + uy * e + ux * o, colour);
+            pic.line(x1 + ux * t - uy * o, y1 + uy * t + ux * o, x1 + ux * e - uy * o,
+                     y1 + uy * e + ux * o, colour);
     }
 }
 
@@ -36,7 +38,8 @@ double worst_corner_error(const TrackedQuad& t, const scene::BoardScene& sc) {
     const int truth_of[4] = {0, 3, 2, 1};
     for (int i = 0; i < 4; ++i) {
         const auto& c = sc.corners[truth_of[i]];
-        worst = std::fmax(worst, std::hypot(px(t.corners[i].x) - c.x / 256.0, px(t.corners[i].y) - c.y / 256.0));
+        worst = std::fmax(
+            worst, std::hypot(px(t.corners[i].x) - c.x / 256.0, px(t.corners[i].y) - c.y / 256.0));
     }
     return worst;
 }
@@ -52,14 +55,18 @@ void side_letters(const TrackedQuad& t, char (&text)[8]) {
 }  // namespace
 
 bool run_demo_sequence(const std::string& out_dir) {
-    std::printf("board sequence: %d frames 640x480, the board turning 2.5 deg and moving 6.3 px a frame; in frames "
-                "%d-%d dark bars hide its top and bottom sides.\n"
-                "  tracked with the turn model (quadtrack track --model turn) and, for comparison, the paper's 3KF "
-                "(the default); pictures and sides are the turn model's\n"
-                "  pictures: lines (red), detected sides (solid green), predicted sides (dashed orange), corners "
-                "(yellow rings, the first cyan), the truth's corners (magenta dots)\n"
-                "  sides: D detected, P predicted, in corner order (left, bottom, right, top)\n",
-                scene::kBoardSequenceFrames, scene::kFirstHiddenFrame, scene::kLastHiddenFrame);
+    std::printf(
+        "board sequence: %d frames 640x480, the board turning 2.5 deg and moving 6.3 px a frame; "
+        "in frames "
+        "%d-%d dark bars hide its top and bottom sides.\n"
+        "  tracked with the turn model (quadtrack track --model turn) and, for comparison, the "
+        "paper's 3KF "
+        "(the default); pictures and sides are the turn model's\n"
+        "  pictures: lines (red), detected sides (solid green), predicted sides (dashed orange), "
+        "corners "
+        "(yellow rings, the first cyan), the truth's corners (magenta dots)\n"
+        "  sides: D detected, P predicted, in corner order (left, bottom, right, top)\n",
+        scene::kBoardSequenceFrames, scene::kFirstHiddenFrame, scene::kLastHiddenFrame);
     const BoardParams params;
     QuadTrackerParams tp = default_quad_tracker_params(640, 480);
     tp.shape = params.quads;
@@ -71,26 +78,30 @@ bool run_demo_sequence(const std::string& out_dir) {
         const scene::BoardScene& sc = d.scene;
         DetectResult r;
         if (!detect_board(d.image, params, r)) {
-            std::fprintf(stderr, "quadtrack demo: frame %d: %s\n", f, status_name(r.status));
+            qt::io::print_error_line(stderr, "quadtrack demo: frame %d: %s", f,
+                                     status_name(r.status));
             return false;
         }
-        const uint16_t n = static_cast<uint16_t>(r.lines.size()), nq = static_cast<uint16_t>(r.quads.size());
+        const uint16_t n = static_cast<uint16_t>(r.lines.size()),
+                       nq = static_cast<uint16_t>(r.quads.size());
         const TrackedQuad t = turn.step(r.lines.data(), n, r.quads.data(), nq);
         const TrackedQuad p = paper.step(r.lines.data(), n, r.quads.data(), nq);
         io::RgbImage pic = io::RgbImage::from_grey(d.image, 60);
-        for (const Segment& l : r.lines) pic.line(px(l.x1), px(l.y1), px(l.x2), px(l.y2), {255, 50, 50});
+        for (const Segment& l : r.lines)
+            pic.line(px(l.x1), px(l.y1), px(l.x2), px(l.y2), {255, 50, 50});
         // The truth, as the scene generator placed it: in its order TL, TR, BR, BL.
         for (const auto& c : sc.corners) pic.ring(c.x / 256.0, c.y / 256.0, 1, {255, 0, 255});
         char name[32];
         std::snprintf(name, sizeof name, "board_%02d.png", f);
-        std::printf("frame %2d: %2zu lines%s, ", f, r.lines.size(), d.hidden ? ", bars over top+bottom" : "");
+        std::printf("frame %2d: %2zu lines%s, ", f, r.lines.size(),
+                    d.hidden ? ", bars over top+bottom" : "");
         if (t.state == TrackState::none) {
             std::printf("no quadrangle");
         } else {
             for (int i = 0; i < 4; ++i) {
                 const bool detected = (t.detected >> i) & 1;
-                side_line(pic, t.corners[i], t.corners[(i + 1) & 3], detected ? io::Rgb{60, 255, 60} : io::Rgb{255, 140, 0},
-                          !detected);
+                side_line(pic, t.corners[i], t.corners[(i + 1) & 3],
+                          detected ? io::Rgb{60, 255, 60} : io::Rgb{255, 140, 0}, !detected);
             }
             for (int i = 0; i < 4; ++i) {
                 const io::Rgb colour = i == 0 ? io::Rgb{0, 230, 255} : io::Rgb{255, 230, 0};
@@ -99,13 +110,17 @@ bool run_demo_sequence(const std::string& out_dir) {
             }
             char sides[8];
             side_letters(t, sides);
-            std::printf("quad (%s, sides %s) track %u, corners (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f), "
-                        "worst corner error %.2f px",
-                        track_state_name(t.state), sides, t.track_id, px(t.corners[0].x), px(t.corners[0].y),
-                        px(t.corners[1].x), px(t.corners[1].y), px(t.corners[2].x), px(t.corners[2].y),
-                        px(t.corners[3].x), px(t.corners[3].y), worst_corner_error(t, sc));
+            std::printf(
+                "quad (%s, sides %s) track %u, corners (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f) "
+                "(%.1f,%.1f), "
+                "worst corner error %.2f px",
+                track_state_name(t.state), sides, t.track_id, px(t.corners[0].x),
+                px(t.corners[0].y), px(t.corners[1].x), px(t.corners[1].y), px(t.corners[2].x),
+                px(t.corners[2].y), px(t.corners[3].x), px(t.corners[3].y),
+                worst_corner_error(t, sc));
         }
-        if (turn.stats().lost_reason != 0) std::printf(", a track was lost: %s", quad_track_lost_name(turn.stats().lost_reason));
+        if (turn.stats().lost_reason != 0)
+            std::printf(", a track was lost: %s", quad_track_lost_name(turn.stats().lost_reason));
         if (p.state == TrackState::none) {
             std::printf("; 3KF: none");
         } else {
@@ -113,11 +128,12 @@ bool run_demo_sequence(const std::string& out_dir) {
             side_letters(p, sides);
             std::printf("; 3KF: sides %s, %.2f px", sides, worst_corner_error(p, sc));
         }
-        if (paper.stats().lost_reason != 0) std::printf(", lost: %s", quad_track_lost_name(paper.stats().lost_reason));
+        if (paper.stats().lost_reason != 0)
+            std::printf(", lost: %s", quad_track_lost_name(paper.stats().lost_reason));
         std::printf(" -> %s\n", name);
         std::string error;
         if (!io::write_png(out_dir + "/" + name, pic.width, pic.height, 3, pic.pixels, error)) {
-            std::fprintf(stderr, "quadtrack demo: %s\n", error.c_str());
+            qt::io::print_error_line(stderr, "quadtrack demo: %s", error.c_str());
             return false;
         }
     }

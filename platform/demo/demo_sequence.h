@@ -1,5 +1,6 @@
-// The demo's board sequence (platform/scene/board_sequence.h) detected and tracked (core/tracking/quad_tracker.h)
-// frame by frame, each frame written as an overlay picture with a one-line summary on stdout.
+// The demo's board sequence (platform/scene/board_sequence.h) detected and tracked
+// (core/tracking/quad_tracker.h) frame by frame, each frame written as an overlay picture with a
+// one-line summary on stdout.
 #pragma once
 #include <string>
 

@@ -1,6 +1,6 @@
 // The target pipeline (core/target/float/target_pipeline.h) run over a generated ground sequence
-// (platform/scene/ground_sequence.h) with its truth beside it: what the target bench, the end-to-end
-// test and the demo share. Host only.
+// (platform/scene/ground_sequence.h) with its truth beside it: what the target bench, the
+// end-to-end test and the demo share. Host only.
 #pragma once
 #include <vector>
 
@@ -31,6 +31,7 @@ std::vector<TargetRunFrame> run_target_sequence(const scene::GroundSequence& seq
                                                 const std::vector<io::GreyImage>* frames = nullptr);
 
 // The configuration of the QVGA pipeline used by the bench, the tests and the demo.
-TargetPipelineConfig qvga_target_config(TargetMethod method = TargetMethod::fused, bool reset = true);
+TargetPipelineConfig qvga_target_config(TargetMethod method = TargetMethod::fused,
+                                        bool reset = true);
 
 }  // namespace qt::cli

@@ -27,13 +27,13 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "quads/board_detector.h"
+#include "api/result_text.h"
 #include "cycle_counter.h"
 #include "pgm_view.h"
-#include "tracking/quad_tracker.h"
-#include "api/result_text.h"
+#include "quads/board_detector.h"
 #include "semihosting.h"
 #include "stack_usage.h"
+#include "tracking/quad_tracker.h"
 
 namespace {
 
@@ -61,7 +61,7 @@ namespace {
 
 constexpr uint16_t kWidth = 320, kHeight = 240;  // BoardDetectorQvga's capacity
 
-// The aims of the budget (issue 6): instructions per QVGA frame for the whole chain (200
+// The aims of the budget: instructions per QVGA frame for the whole chain (200
 // frames/s on a 480 MHz part at one instruction per cycle), RAM including the stack, flash.
 constexpr uint64_t kAimInstructions = 2400000;
 constexpr uint32_t kAimRamBytes = 64 * 1024, kAimFlashBytes = 64 * 1024;
@@ -74,18 +74,18 @@ struct PgmCheck {
 };
 constexpr PgmCheck kPgmChecks[] = {
     {"P5\n2 2\n255\nabcd", true},
-    {"P5 2 2 255 \n\n\n\n", true},               // raster bytes that look like whitespace
+    {"P5 2 2 255 \n\n\n\n", true},  // raster bytes that look like whitespace
     {"P5\n# comment\n2\t2 # more\n255\rabcd", true},
-    {"P2\n2 2\n255\nabcd", false},              // ASCII greymap
-    {"P52 2\n255\nabcd", false},                // no separator after the magic
-    {"P5\n2 2\n65535\nabcdefgh", false},        // two bytes per pixel
+    {"P2\n2 2\n255\nabcd", false},        // ASCII greymap
+    {"P52 2\n255\nabcd", false},          // no separator after the magic
+    {"P5\n2 2\n65535\nabcdefgh", false},  // two bytes per pixel
     {"P5\n2 2\n127\nabcd", false},
-    {"P5\n2 2\n255abcd", false},                // no whitespace before the raster
-    {"P5\n2 2\n255\n\nabcd", false},            // two: the raster would be 5 bytes
-    {"P5\n2 2\n255\nabc", false},               // short raster
-    {"P5\n2 2\n255\nabcde", false},             // trailing byte
+    {"P5\n2 2\n255abcd", false},      // no whitespace before the raster
+    {"P5\n2 2\n255\n\nabcd", false},  // two: the raster would be 5 bytes
+    {"P5\n2 2\n255\nabc", false},     // short raster
+    {"P5\n2 2\n255\nabcde", false},   // trailing byte
     {"P5\n0 2\n255\n", false},
-    {"P5\n321 1\n255\n", false},                // wider than the detector
+    {"P5\n321 1\n255\n", false},  // wider than the detector
     {"P5\n2 -2\n255\nabcd", false},
     {"P5\n2 2", false},
     {"", false},
@@ -119,7 +119,16 @@ enum Stage : unsigned { kRows, kHough, kCluster, kQuads, kTrack, kStages };
 constexpr const char* kStageNames[kStages] = {"rows", "hough", "cluster", "quads", "track"};
 
 // What the stages worked on, for reading the instruction counts.
-enum Work : unsigned { kEdges, kVoters, kVotes, kFollowed, kSegments, kPairs, kCombinations, kWorks };
+enum Work : unsigned {
+    kEdges,
+    kVoters,
+    kVotes,
+    kFollowed,
+    kSegments,
+    kPairs,
+    kCombinations,
+    kWorks
+};
 constexpr const char* kWorkNames[kWorks] = {"edges",    "voters", "votes",       "followed",
                                             "segments", "pairs",  "combinations"};
 
@@ -176,16 +185,19 @@ const char* run_frame(const ChainFrame& frame, bool& frame_open, Instructions& n
     uint64_t t = ticks_now(), now = t;
     const qt::Status status = g_det.finish([&](qt::FinishStage stage) {
         now = ticks_now();
-        const Stage ours = stage == qt::FinishStage::hough ? kHough : stage == qt::FinishStage::cluster ? kCluster : kQuads;
+        const Stage ours = stage == qt::FinishStage::hough     ? kHough
+                           : stage == qt::FinishStage::cluster ? kCluster
+                                                               : kQuads;
         n.stage[ours] = ticks_to_instructions(now - t);
         t = now;
     });
-    if (status != qt::Status::ok && status != qt::Status::capacity_exceeded) return qt::status_name(status);
+    if (status != qt::Status::ok && status != qt::Status::capacity_exceeded)
+        return qt::status_name(status);
     frame_open = false;
 
     t = ticks_now();
-    const qt::TrackedQuad track = g_tracker.step(g_det.lines().lines(), g_det.lines().line_count(), g_det.quads(),
-                                                 g_det.quad_count());
+    const qt::TrackedQuad track = g_tracker.step(g_det.lines().lines(), g_det.lines().line_count(),
+                                                 g_det.quads(), g_det.quad_count());
     n.stage[kTrack] = ticks_to_instructions(ticks_now() - t);
 
     qt::write_frame_text(frame.name, g_det, status, track, g_tracker.stats().lost_reason,
@@ -267,9 +279,11 @@ int main() {
             for (unsigned w = 0; w < kWorks; ++w) print_field(kWorkNames[w], per_frame[f].work[w]);
             sh_write("\n");
             for (unsigned s = 0; s < kStages; ++s)
-                if (per_frame[f].stage[s] > worst[c].stage[s]) worst[c].stage[s] = per_frame[f].stage[s];
+                if (per_frame[f].stage[s] > worst[c].stage[s])
+                    worst[c].stage[s] = per_frame[f].stage[s];
         }
-        if (chain.count > 1) print_instructions("median ", chain.name, median_of(per_frame, chain.count));
+        if (chain.count > 1)
+            print_instructions("median ", chain.name, median_of(per_frame, chain.count));
     }
 
     // Worst frame of each case, stage by stage (the stages' worst frames may differ).

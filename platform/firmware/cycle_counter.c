@@ -14,14 +14,14 @@ enum {
     kReload = 0xFFFFFFu,       /* 24-bit counter: period 2^24 ticks */
 };
 
-static volatile uint32_t g_wraps;  /* completed periods of 2^24 ticks */
+static volatile uint32_t g_wraps; /* completed periods of 2^24 ticks */
 
 void SysTick_Handler(void) { ++g_wraps; }
 
 void cycle_counter_init(void) {
     SYST_CSR = 0;
     SYST_RVR = kReload;
-    SYST_CVR = 0;  /* any write clears it to 0 (no interrupt); it reloads LOAD on the next tick */
+    SYST_CVR = 0; /* any write clears it to 0 (no interrupt); it reloads LOAD on the next tick */
     g_wraps = 0;
     SYST_CSR = kCsrEnable | kCsrTickInt | kCsrCoreClock;
 }

@@ -11,11 +11,11 @@
 extern "C" {
 #endif
 
-#define QT_TICK_HZ 25000000u                            /* SysTick clock, ticks per second */
-#define QT_INSTR_PER_TICK 40u                           /* 1e9 instr/s (-icount 0) / 25 MHz */
+#define QT_TICK_HZ 25000000u  /* SysTick clock, ticks per second */
+#define QT_INSTR_PER_TICK 40u /* 1e9 instr/s (-icount 0) / 25 MHz */
 
-void cycle_counter_init(void);  /* starts SysTick and its wrap interrupt; call once */
-uint64_t ticks_now(void);       /* ticks since cycle_counter_init(), 64-bit */
+void cycle_counter_init(void); /* starts SysTick and its wrap interrupt; call once */
+uint64_t ticks_now(void);      /* ticks since cycle_counter_init(), 64-bit */
 
 static inline uint64_t ticks_to_instructions(uint64_t ticks) { return ticks * QT_INSTR_PER_TICK; }
 

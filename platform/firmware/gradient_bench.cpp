@@ -22,7 +22,8 @@
 #error "QT_GRADIENT_CASES must list the vector cases (platform/firmware/CMakeLists.txt)"
 #endif
 
-#define QT_CASE(id, sizes, hash) extern "C" const uint8_t qt_vec_##id##_begin[], qt_vec_##id##_end[];
+#define QT_CASE(id, sizes, hash) \
+    extern "C" const uint8_t qt_vec_##id##_begin[], qt_vec_##id##_end[];
 QT_GRADIENT_CASES
 #undef QT_CASE
 
@@ -64,9 +65,12 @@ bool parse_beat(const uint8_t* p, Beat& beat) {
     for (unsigned i = 0; i < kBeatChars - 1; ++i) {
         const uint8_t c = p[i];
         uint32_t d;
-        if (c >= '0' && c <= '9') d = static_cast<uint32_t>(c - '0');
-        else if (c >= 'a' && c <= 'f') d = static_cast<uint32_t>(c - 'a' + 10);
-        else return false;
+        if (c >= '0' && c <= '9')
+            d = static_cast<uint32_t>(c - '0');
+        else if (c >= 'a' && c <= 'f')
+            d = static_cast<uint32_t>(c - 'a' + 10);
+        else
+            return false;
         v = (v << 4) | d;
     }
     if (p[kBeatChars - 1] != '\n' || (v >> 26) != 0) return false;
@@ -80,7 +84,8 @@ bool parse_beat(const uint8_t* p, Beat& beat) {
 void hash_out_line(Fnv1a64& hash, qt::gradient_word word, bool tuser, bool tlast) {
     static constexpr char kHex[] = "0123456789abcdef";
     hash.add(static_cast<uint8_t>(kHex[(tlast ? 2u : 0u) | (tuser ? 1u : 0u)]));
-    for (int shift = 28; shift >= 0; shift -= 4) hash.add(static_cast<uint8_t>(kHex[(word >> shift) & 15u]));
+    for (int shift = 28; shift >= 0; shift -= 4)
+        hash.add(static_cast<uint8_t>(kHex[(word >> shift) & 15u]));
     hash.add('\n');
 }
 
@@ -122,7 +127,8 @@ Result run_case(const Case& c) {
         uint16_t height = 0;
         while (!end_of_row) {
             Beat b;
-            if (static_cast<unsigned>(c.in_end - p) < kBeatChars) return failed(r, "truncated beat");
+            if (static_cast<unsigned>(c.in_end - p) < kBeatChars)
+                return failed(r, "truncated beat");
             if (!parse_beat(p, b)) return failed(r, "malformed beat");
             p += kBeatChars;
             if (length == kMaxWidth) return failed(r, "row wider than 640");

@@ -1,6 +1,8 @@
 #include "pgm_view.h"
 
-static bool is_space(uint8_t c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+static bool is_space(uint8_t c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
 
 // Skips whitespace and comments; false if there was none (a token must follow whitespace).
 static bool skip_separator(const uint8_t*& p, const uint8_t* end) {
@@ -71,4 +73,3 @@ Pgm parse_pgm(const uint8_t* p, const uint8_t* end, uint16_t max_width, uint16_t
     pgm.height = static_cast<uint16_t>(height);
     return pgm;
 }
-

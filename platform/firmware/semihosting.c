@@ -23,7 +23,7 @@ void sh_write(const char* s) { sh_call(SYS_WRITE0, (uintptr_t)s); }
 void sh_putc(char c) { sh_call(SYS_WRITEC, (uintptr_t)&c); }
 
 void sh_dec(uint64_t v) {
-    char buf[21];  /* 2^64 - 1 has 20 digits, plus NUL */
+    char buf[21]; /* 2^64 - 1 has 20 digits, plus NUL */
     char* p = buf + sizeof buf - 1;
     *p = '\0';
     do {
@@ -50,7 +50,6 @@ void sh_exit(int status) {
     const uintptr_t block[2] = {ADP_Stopped_ApplicationExit, (uintptr_t)(unsigned)status};
     sh_call(SYS_EXIT_EXTENDED, (uintptr_t)block);
     /* Host without the extension: plain SYS_EXIT only tells success (0) from failure (1). */
-    sh_call(SYS_EXIT, status == 0 ? ADP_Stopped_ApplicationExit
-                                  : ADP_Stopped_RunTimeErrorUnknown);
-    for (;;) __asm__ volatile("bkpt 0");  /* no host at all: stop here for a debugger */
+    sh_call(SYS_EXIT, status == 0 ? ADP_Stopped_ApplicationExit : ADP_Stopped_RunTimeErrorUnknown);
+    for (;;) __asm__ volatile("bkpt 0"); /* no host at all: stop here for a debugger */
 }

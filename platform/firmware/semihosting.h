@@ -7,10 +7,10 @@
 extern "C" {
 #endif
 
-void sh_write(const char* s);           /* NUL-terminated string (SYS_WRITE0) */
-void sh_putc(char c);                   /* one character (SYS_WRITEC) */
-void sh_dec(uint64_t v);                /* unsigned decimal */
-void sh_hex(uint64_t v, unsigned digits);  /* lower-case hex, zero-padded to digits (max 16) */
+void sh_write(const char* s);             /* NUL-terminated string (SYS_WRITE0) */
+void sh_putc(char c);                     /* one character (SYS_WRITEC) */
+void sh_dec(uint64_t v);                  /* unsigned decimal */
+void sh_hex(uint64_t v, unsigned digits); /* lower-case hex, zero-padded to digits (max 16) */
 
 /* Ends the program: QEMU exits with `status` (mod 256). Does not return. */
 __attribute__((noreturn)) void sh_exit(int status);

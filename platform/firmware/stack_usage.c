@@ -1,6 +1,6 @@
 #include "stack_usage.h"
 
-extern uint32_t __stack_limit[], __stack_top[];  /* mps2_an386.ld */
+extern uint32_t __stack_limit[], __stack_top[]; /* mps2_an386.ld */
 
 uint32_t stack_size_bytes(void) {
     return (uint32_t)((uintptr_t)__stack_top - (uintptr_t)__stack_limit);

@@ -17,8 +17,8 @@ extern init_fn __preinit_array_start[], __preinit_array_end[];
 extern init_fn __init_array_start[], __init_array_end[];
 
 enum {
-    kExitHardFault = 0x7e,       /* exit status after a HardFault */
-    kExitUnexpectedIrq = 0x7d,   /* exit status after any exception without a handler */
+    kExitHardFault = 0x7e,     /* exit status after a HardFault */
+    kExitUnexpectedIrq = 0x7d, /* exit status after any exception without a handler */
 };
 
 /* The loops below go through volatile pointers so that GCC cannot turn them into
@@ -44,7 +44,7 @@ void hard_fault_report(const uint32_t* frame) {
     const volatile uint32_t* const cfsr = (const volatile uint32_t*)0xE000ED28u;
     const volatile uint32_t* const hfsr = (const volatile uint32_t*)0xE000ED2Cu;
     sh_write("HardFault pc=0x");
-    sh_hex(frame[6], 8);  /* exception frame: r0 r1 r2 r3 r12 lr pc xpsr */
+    sh_hex(frame[6], 8); /* exception frame: r0 r1 r2 r3 r12 lr pc xpsr */
     sh_write(" lr=0x");
     sh_hex(frame[5], 8);
     sh_write(" cfsr=0x");
@@ -85,22 +85,25 @@ void DebugMon_Handler(void) WEAK_DEFAULT;
 void PendSV_Handler(void) WEAK_DEFAULT;
 void SysTick_Handler(void) WEAK_DEFAULT;
 
-enum { kExternalIrqs = 32 };  /* QEMU's AN385/AN386 NVIC has 32 external interrupts */
+enum { kExternalIrqs = 32 }; /* QEMU's AN385/AN386 NVIC has 32 external interrupts */
 
 typedef void (*vector)(void);
 __attribute__((section(".isr_vector"), used)) const vector qt_vector_table[16 + kExternalIrqs] = {
-    (vector)(uintptr_t)__stack_top,  /* 0: initial main stack pointer */
-    Reset_Handler,                   /* 1 */
-    NMI_Handler,                     /* 2 */
-    HardFault_Handler,               /* 3 */
-    MemManage_Handler,               /* 4 */
-    BusFault_Handler,                /* 5 */
-    UsageFault_Handler,              /* 6 */
-    0, 0, 0, 0,                      /* 7..10 reserved */
-    SVC_Handler,                     /* 11 */
-    DebugMon_Handler,                /* 12 */
-    0,                               /* 13 reserved */
-    PendSV_Handler,                  /* 14 */
-    SysTick_Handler,                 /* 15 */
+    (vector)(uintptr_t)__stack_top, /* 0: initial main stack pointer */
+    Reset_Handler,                  /* 1 */
+    NMI_Handler,                    /* 2 */
+    HardFault_Handler,              /* 3 */
+    MemManage_Handler,              /* 4 */
+    BusFault_Handler,               /* 5 */
+    UsageFault_Handler,             /* 6 */
+    0,
+    0,
+    0,
+    0,                /* 7..10 reserved */
+    SVC_Handler,      /* 11 */
+    DebugMon_Handler, /* 12 */
+    0,                /* 13 reserved */
+    PendSV_Handler,   /* 14 */
+    SysTick_Handler,  /* 15 */
     [16 ... 16 + kExternalIrqs - 1] = Default_Handler,
 };

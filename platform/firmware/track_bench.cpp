@@ -18,11 +18,11 @@
 #include <stdint.h>
 
 #include "cycle_counter.h"
-#include "tracking/line_tracker.h"
 #include "semihosting.h"
 #include "stack_usage.h"
 #include "track_expected.h"  // generated: #define QT_TRACK_EXPECTED {{"1KF", 0x...u}, ...}
 #include "track_sequence.h"
+#include "tracking/line_tracker.h"
 
 namespace {
 
@@ -86,7 +86,8 @@ int main() {
         const uint64_t frames = qt::kTrackFrames;
         // Rounded to nearest; the frame rate from the unrounded count, truncated.
         const uint64_t per_frame = (instructions + frames / 2) / frames;
-        const uint64_t quad_fps = instructions == 0 ? 0 : kClockHz * frames / (kQuadLines * instructions);
+        const uint64_t quad_fps =
+            instructions == 0 ? 0 : kClockHz * frames / (kQuadLines * instructions);
 
         sh_write("track ");
         sh_write(c.name);
@@ -98,7 +99,8 @@ int main() {
         sh_dec(quad_fps);
         sh_write(" frames/s\n");
 
-        const bool pass = same_text(c.name, kExpected[i].name) && r.checksum == kExpected[i].checksum;
+        const bool pass =
+            same_text(c.name, kExpected[i].name) && r.checksum == kExpected[i].checksum;
         passed += pass ? 1 : 0;
         sh_write("track ");
         sh_write(c.name);

@@ -16,8 +16,9 @@ int main(int argc, char** argv) {
         perror(argv[1]);
         return 1;
     }
-    fprintf(f, "// Generated at build time by track_expected_host: the checksums of\n"
-               "// track_sequence.h computed on the build machine.\n#define QT_TRACK_EXPECTED {");
+    fprintf(f,
+            "// Generated at build time by track_expected_host: the checksums of\n"
+            "// track_sequence.h computed on the build machine.\n#define QT_TRACK_EXPECTED {");
     for (int i = 0; i < qt::kTrackCaseCount; ++i)
         fprintf(f, "{\"%s\", 0x%08lxu}, ", qt::kTrackCases[i].name, sums[i]);
     fprintf(f, "}\n");

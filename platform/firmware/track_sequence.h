@@ -1,8 +1,8 @@
-// The synthetic line motion and checksum of the tracker benchmark, shared by the Cortex-M4
-// image (platform/firmware/track_bench.cpp), the host tool that computes its expected
-// checksums at build time (platform/firmware/CMakeLists.txt) and the host test
-// (tests/tracking/test_track_checksum.cpp). Header-only, core types only, integer arithmetic only: the
-// same source must give bit-identical results on every target.
+// The synthetic line motion and checksum of the tracker benchmark, shared by the Cortex-M4 image
+// (platform/firmware/track_bench.cpp), the host tool that computes its expected checksums at build
+// time (platform/firmware/CMakeLists.txt) and the host test
+// (tests/tracking/test_track_checksum.cpp). Header-only, core types only, integer arithmetic only:
+// the same source must give bit-identical results on every target.
 //
 // Motion. One line in a 320 × 240 frame, given by its normal direction θ and its signed
 // distance ρc from the frame's centre c = (159.5, 119.5) (pixel centres, y down):
@@ -30,9 +30,9 @@
 
 #include "base/angle.h"
 #include "base/fixed.h"
-#include "tracking/line_tracker.h"
 #include "base/prng.h"
 #include "lines/segment.h"
+#include "tracking/line_tracker.h"
 
 namespace qt {
 
@@ -43,8 +43,8 @@ constexpr uint64_t kTrackSeed = 0x7472616B;
 // The motion's parameters.
 constexpr angle_t kTrackTheta0 = angle_from_deg(30);
 constexpr angle_t kTrackThetaStep = angle_from_deg(2);
-constexpr int32_t kTrackRho0Raw = 10 * 65536;      // 10 px, q16_16 raw
-constexpr int32_t kTrackRhoStepRaw = 65536 / 2;    // 0.5 px per frame
+constexpr int32_t kTrackRho0Raw = 10 * 65536;    // 10 px, q16_16 raw
+constexpr int32_t kTrackRhoStepRaw = 65536 / 2;  // 0.5 px per frame
 // The measurement noise bounds: 0.1° as a binary angle, 1/4 px as q16_16 raw.
 constexpr uint32_t kTrackThetaNoise = static_cast<uint32_t>(div_round_half_away(pow2(32), 3600));
 constexpr uint32_t kTrackRhoNoiseRaw = 65536 / 4;
@@ -71,10 +71,14 @@ inline Segment track_segment(angle_t theta, int32_t rho_centre_raw) {
     const SinCos n = sin_cos(theta);
     // Foot of the perpendicular from the centre, F = c + ρc·n, and half the segment along the
     // line's direction d = (−sin θ, cos θ).
-    const int64_t fx = kTrackCentreXRaw + shr_round_half_away(static_cast<int64_t>(rho_centre_raw) * n.cos.raw, 30);
-    const int64_t fy = kTrackCentreYRaw + shr_round_half_away(static_cast<int64_t>(rho_centre_raw) * n.sin.raw, 30);
-    const int64_t hx = shr_round_half_away(-static_cast<int64_t>(kTrackHalfLengthRaw) * n.sin.raw, 30);
-    const int64_t hy = shr_round_half_away(static_cast<int64_t>(kTrackHalfLengthRaw) * n.cos.raw, 30);
+    const int64_t fx = kTrackCentreXRaw +
+                       shr_round_half_away(static_cast<int64_t>(rho_centre_raw) * n.cos.raw, 30);
+    const int64_t fy = kTrackCentreYRaw +
+                       shr_round_half_away(static_cast<int64_t>(rho_centre_raw) * n.sin.raw, 30);
+    const int64_t hx =
+        shr_round_half_away(-static_cast<int64_t>(kTrackHalfLengthRaw) * n.sin.raw, 30);
+    const int64_t hy =
+        shr_round_half_away(static_cast<int64_t>(kTrackHalfLengthRaw) * n.cos.raw, 30);
     Segment s{};
     s.x1 = q16_16::from_raw(fx - hx);
     s.y1 = q16_16::from_raw(fy - hy);

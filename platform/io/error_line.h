@@ -12,6 +12,7 @@ namespace qt::io {
 std::string one_line(std::string s);
 
 // printf-style `format` (no trailing newline), made one line, then '\n', on `err`.
-void print_error_line(std::FILE* err, const char* format, ...) __attribute__((format(printf, 2, 3)));
+void print_error_line(std::FILE* err, const char* format, ...)
+    __attribute__((format(printf, 2, 3)));
 
 }  // namespace qt::io

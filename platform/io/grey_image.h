@@ -15,7 +15,9 @@ struct GreyImage {
 
     GreyImage() = default;
     GreyImage(int w, int h, uint8_t fill = 0)
-        : width(w), height(h), pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
+        : width(w),
+          height(h),
+          pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
     uint8_t& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
     uint8_t at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
     const uint8_t* row(int y) const { return pixels.data() + static_cast<std::size_t>(y) * width; }

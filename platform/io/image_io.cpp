@@ -43,7 +43,9 @@ FilePtr open_read(const std::string& path, std::string& error) {
 }
 
 // Netpbm whitespace: blank, tab, CR, LF, VT, FF.
-bool is_space(int c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
+bool is_space(int c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+}
 
 enum class Format { unknown, pgm, ppm, y4m };
 
@@ -59,7 +61,8 @@ Format sniff(std::FILE* f) {
         if (c != EOF && !is_space(c) && c != '#') return Format::unknown;
         return m[1] == '5' ? Format::pgm : Format::ppm;
     }
-    if (m[0] != 'Y' || m[1] != 'U' || std::fread(m + 2, 1, 7, f) != 7 || std::memcmp(m, "YUV4MPEG2", 9) != 0)
+    if (m[0] != 'Y' || m[1] != 'U' || std::fread(m + 2, 1, 7, f) != 7 ||
+        std::memcmp(m, "YUV4MPEG2", 9) != 0)
         return Format::unknown;
     const int c = std::getc(f);
     if (c != EOF) std::ungetc(c, f);
@@ -136,11 +139,14 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
         if (skip_space(f) == EOF) return fail(error, path, truncated + "before the " + names[i]);
         size[i] = read_token(f);
         if (!size[i].numeric || size[i].value == 0)
-            return fail(error, path, malformed + names[i] + " '" + size[i].text + "' is not a positive integer");
+            return fail(error, path,
+                        malformed + names[i] + " '" + size[i].text + "' is not a positive integer");
     }
-    if (size[0].value > static_cast<uint64_t>(kMaxImageSide) || size[1].value > static_cast<uint64_t>(kMaxImageSide))
-        return fail(error, path, "image too large: " + size[0].text + " x " + size[1].text + " (at most " +
-                                     std::to_string(kMaxImageSide) + " pixels per side)");
+    if (size[0].value > static_cast<uint64_t>(kMaxImageSide) ||
+        size[1].value > static_cast<uint64_t>(kMaxImageSide))
+        return fail(error, path,
+                    "image too large: " + size[0].text + " x " + size[1].text + " (at most " +
+                        std::to_string(kMaxImageSide) + " pixels per side)");
     const int width = static_cast<int>(size[0].value);
     const int height = static_cast<int>(size[1].value);
 
@@ -149,7 +155,8 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
     if (!mt.numeric || mt.value == 0 || mt.value > 65535)
         return fail(error, path, malformed + "maxval '" + mt.text + "' is not in 1..65535");
     if (mt.value > 255)
-        return fail(error, path, "unsupported maxval " + mt.text + " (only 8-bit samples, maxval <= 255)");
+        return fail(error, path,
+                    "unsupported maxval " + mt.text + " (only 8-bit samples, maxval <= 255)");
     const unsigned maxval = static_cast<unsigned>(mt.value);
     // Exactly one whitespace byte before the raster. A comment straight after the maxval ends
     // with its newline, which is that byte (as libnetpbm reads it).
@@ -161,7 +168,8 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
     if (c == EOF) return fail(error, path, truncated + "after the maxval");
 
     uint8_t scale[256];
-    for (unsigned v = 0; v <= maxval; ++v) scale[v] = static_cast<uint8_t>((v * 255u + maxval / 2u) / maxval);
+    for (unsigned v = 0; v <= maxval; ++v)
+        scale[v] = static_cast<uint8_t>((v * 255u + maxval / 2u) / maxval);
 
     const size_t channels = ppm ? 3 : 1;
     const size_t row_bytes = static_cast<size_t>(width) * channels;
@@ -172,7 +180,8 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
         img.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
         row.resize(row_bytes);
     } catch (const std::bad_alloc&) {
-        return fail(error, path, "out of memory for a " + size[0].text + " x " + size[1].text + " image");
+        return fail(error, path,
+                    "out of memory for a " + size[0].text + " x " + size[1].text + " image");
     }
     img.width = width;
     img.height = height;
@@ -182,14 +191,16 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
         got += n;
         if (n < row_bytes) {
             if (std::ferror(f)) return fail(error, path, "read error (" + errno_text(errno) + ")");
-            return fail(error, path, "truncated pixel data: expected " + std::to_string(expected) + " bytes, got " +
-                                         std::to_string(got));
+            return fail(error, path,
+                        "truncated pixel data: expected " + std::to_string(expected) +
+                            " bytes, got " + std::to_string(got));
         }
         for (size_t i = 0; i < row_bytes; ++i) {
             if (row[i] > maxval)
-                return fail(error, path, "sample " + std::to_string(row[i]) + " at pixel (" +
-                                             std::to_string(i / channels) + ", " + std::to_string(y) +
-                                             ") above maxval " + std::to_string(maxval));
+                return fail(error, path,
+                            "sample " + std::to_string(row[i]) + " at pixel (" +
+                                std::to_string(i / channels) + ", " + std::to_string(y) +
+                                ") above maxval " + std::to_string(maxval));
         }
         uint8_t* dst = img.pixels.data() + static_cast<size_t>(y) * static_cast<size_t>(width);
         if (!ppm) {
@@ -243,14 +254,17 @@ bool read_y4m_header(std::FILE* f, const std::string& path, Y4mInfo& info, std::
     std::string line;
     bool too_long = false;
     if (!read_line(f, line, too_long))
-        return fail(error, path, too_long ? "Y4M header line longer than " + std::to_string(kMaxY4mLine) + " bytes"
-                                          : "truncated Y4M header (no end of line)");
+        return fail(error, path,
+                    too_long
+                        ? "Y4M header line longer than " + std::to_string(kMaxY4mLine) + " bytes"
+                        : "truncated Y4M header (no end of line)");
     Token w, h;
     bool have_w = false, have_h = false;
     std::string colour = "420";
     size_t pos = 0;
     while (pos < line.size()) {
-        const size_t end = line.find(' ', pos) == std::string::npos ? line.size() : line.find(' ', pos);
+        const size_t end =
+            line.find(' ', pos) == std::string::npos ? line.size() : line.find(' ', pos);
         const std::string tok = line.substr(pos, end - pos);
         pos = end + 1;
         if (tok.empty()) continue;
@@ -267,11 +281,15 @@ bool read_y4m_header(std::FILE* f, const std::string& path, Y4mInfo& info, std::
     }
     if (!have_w) return fail(error, path, "Y4M header lacks the width (W)");
     if (!have_h) return fail(error, path, "Y4M header lacks the height (H)");
-    if (!w.numeric || w.value == 0) return fail(error, path, "Y4M header: width '" + w.text + "' is not a positive integer");
-    if (!h.numeric || h.value == 0) return fail(error, path, "Y4M header: height '" + h.text + "' is not a positive integer");
-    if (w.value > static_cast<uint64_t>(kMaxImageSide) || h.value > static_cast<uint64_t>(kMaxImageSide))
-        return fail(error, path, "image too large: " + w.text + " x " + h.text + " (at most " +
-                                     std::to_string(kMaxImageSide) + " pixels per side)");
+    if (!w.numeric || w.value == 0)
+        return fail(error, path, "Y4M header: width '" + w.text + "' is not a positive integer");
+    if (!h.numeric || h.value == 0)
+        return fail(error, path, "Y4M header: height '" + h.text + "' is not a positive integer");
+    if (w.value > static_cast<uint64_t>(kMaxImageSide) ||
+        h.value > static_cast<uint64_t>(kMaxImageSide))
+        return fail(error, path,
+                    "image too large: " + w.text + " x " + h.text + " (at most " +
+                        std::to_string(kMaxImageSide) + " pixels per side)");
     info.width = static_cast<int>(w.value);
     info.height = static_cast<int>(h.value);
     const uint64_t W = w.value, H = h.value;
@@ -284,8 +302,10 @@ bool read_y4m_header(std::FILE* f, const std::string& path, Y4mInfo& info, std::
     else if (colour == "mono")
         info.chroma_bytes = 0;
     else
-        return fail(error, path, "unsupported Y4M colour space '" + (colour.size() > 24 ? colour.substr(0, 24) + "..." : colour) +
-                                     "' (8-bit 420jpeg, 420paldv, 420mpeg2, 420, 422, 444 or mono only)");
+        return fail(error, path,
+                    "unsupported Y4M colour space '" +
+                        (colour.size() > 24 ? colour.substr(0, 24) + "..." : colour) +
+                        "' (8-bit 420jpeg, 420paldv, 420mpeg2, 420, 422, 444 or mono only)");
     return true;
 }
 
@@ -314,15 +334,18 @@ FrameResult read_y4m_frame(std::FILE* f, const std::string& path, const Y4mInfo&
         return FrameResult::error;
     }
     if (c != '\n' && c != ' ') {
-        fail(error, path, frame + "bad FRAME marker '" + std::string(marker, 5) + static_cast<char>(c) + "'");
+        fail(error, path,
+             frame + "bad FRAME marker '" + std::string(marker, 5) + static_cast<char>(c) + "'");
         return FrameResult::error;
     }
     if (c == ' ') {
         std::string params;
         bool too_long = false;
         if (!read_line(f, params, too_long)) {
-            fail(error, path, frame + (too_long ? "FRAME parameters longer than " + std::to_string(kMaxY4mLine) + " bytes"
-                                                : "truncated (file ends inside the FRAME line)"));
+            fail(error, path,
+                 frame + (too_long ? "FRAME parameters longer than " + std::to_string(kMaxY4mLine) +
+                                         " bytes"
+                                   : "truncated (file ends inside the FRAME line)"));
             return FrameResult::error;
         }
     }
@@ -333,8 +356,9 @@ FrameResult read_y4m_frame(std::FILE* f, const std::string& path, const Y4mInfo&
         img.pixels.resize(static_cast<size_t>(y_bytes));
         if (scratch.size() < 65536) scratch.resize(65536);
     } catch (const std::bad_alloc&) {
-        fail(error, path, frame + "out of memory for a " + std::to_string(info.width) + " x " +
-                              std::to_string(info.height) + " frame");
+        fail(error, path,
+             frame + "out of memory for a " + std::to_string(info.width) + " x " +
+                 std::to_string(info.height) + " frame");
         return FrameResult::error;
     }
     img.width = info.width;
@@ -353,8 +377,9 @@ FrameResult read_y4m_frame(std::FILE* f, const std::string& path, const Y4mInfo&
         if (std::ferror(f))
             fail(error, path, frame + "read error (" + errno_text(errno) + ")");
         else
-            fail(error, path, frame + "truncated frame data: expected " + std::to_string(expected) + " bytes, got " +
-                                  std::to_string(got));
+            fail(error, path,
+                 frame + "truncated frame data: expected " + std::to_string(expected) +
+                     " bytes, got " + std::to_string(got));
         return FrameResult::error;
     }
     out = std::move(img);
@@ -383,7 +408,8 @@ bool read_image(const std::string& path, GreyImage& out, std::string& error) {
             }
             case Format::unknown: break;
         }
-        if (std::ferror(f.get())) return fail(error, path, "cannot read (" + errno_text(errno) + ")");
+        if (std::ferror(f.get()))
+            return fail(error, path, "cannot read (" + errno_text(errno) + ")");
         return fail(error, path, "not a PGM (P5), PPM (P6) or Y4M file");
     } catch (const std::bad_alloc&) {  // a message string itself could not be built
         out_of_memory(error, path);
@@ -428,14 +454,17 @@ bool write_pgm(const std::string& path, const GreyImage& img, std::string& error
     try {
         if (img.width <= 0 || img.height <= 0 ||
             img.pixels.size() != static_cast<size_t>(img.width) * static_cast<size_t>(img.height))
-            return fail(error, path, "cannot write a " + std::to_string(img.width) + " x " + std::to_string(img.height) +
-                                         " image holding " + std::to_string(img.pixels.size()) + " pixels");
+            return fail(error, path,
+                        "cannot write a " + std::to_string(img.width) + " x " +
+                            std::to_string(img.height) + " image holding " +
+                            std::to_string(img.pixels.size()) + " pixels");
         errno = 0;
         FilePtr f(std::fopen(path.c_str(), "wb"));
         if (!f) return fail(error, path, "cannot create (" + errno_text(errno) + ")");
         errno = 0;
-        bool ok = std::fprintf(f.get(), "P5\n%d %d\n255\n", img.width, img.height) > 0 &&
-                  std::fwrite(img.pixels.data(), 1, img.pixels.size(), f.get()) == img.pixels.size();
+        bool ok =
+            std::fprintf(f.get(), "P5\n%d %d\n255\n", img.width, img.height) > 0 &&
+            std::fwrite(img.pixels.data(), 1, img.pixels.size(), f.get()) == img.pixels.size();
         int e = errno;
         if (std::fclose(f.release()) != 0 && ok) {
             ok = false;
@@ -455,9 +484,11 @@ bool write_pgm(const std::string& path, const GreyImage& img, std::string& error
 namespace {
 
 // The pattern's file for `number`: prefix, the number zero-padded to `pad` digits, suffix.
-std::string pattern_name(const std::string& prefix, int pad, long number, const std::string& suffix) {
+std::string pattern_name(const std::string& prefix, int pad, long number,
+                         const std::string& suffix) {
     std::string digits = std::to_string(number);
-    if (static_cast<int>(digits.size()) < pad) digits.insert(0, static_cast<size_t>(pad) - digits.size(), '0');
+    if (static_cast<int>(digits.size()) < pad)
+        digits.insert(0, static_cast<size_t>(pad) - digits.size(), '0');
     return prefix + digits + suffix;
 }
 
@@ -516,7 +547,9 @@ bool FrameSource::open(const std::string& spec, std::string& error) {
         sticky_error_.clear();
         if (spec.find('%') != std::string::npos) {
             if (!parse_pattern(spec, prefix_, pad_width_, suffix_))
-                return fail(error, spec, "bad frame pattern (use one %d or %0Nd with N 1..9, and %% for a literal %)");
+                return fail(
+                    error, spec,
+                    "bad frame pattern (use one %d or %0Nd with N 1..9, and %% for a literal %)");
             const std::string first0 = pattern_name(prefix_, pad_width_, 0, suffix_);
             const std::string first1 = pattern_name(prefix_, pad_width_, 1, suffix_);
             if (file_present(first0)) {
@@ -524,7 +557,8 @@ bool FrameSource::open(const std::string& spec, std::string& error) {
             } else if (file_present(first1)) {
                 next_number_ = 1;
             } else {
-                return fail(error, spec, "no frame files (neither " + first0 + " nor " + first1 + " exists)");
+                return fail(error, spec,
+                            "no frame files (neither " + first0 + " nor " + first1 + " exists)");
             }
             kind_ = Kind::pattern;
             return true;
@@ -546,7 +580,8 @@ bool FrameSource::open(const std::string& spec, std::string& error) {
             }
             case Format::unknown: break;
         }
-        if (std::ferror(f.get())) return fail(error, spec, "cannot read (" + errno_text(errno) + ")");
+        if (std::ferror(f.get()))
+            return fail(error, spec, "cannot read (" + errno_text(errno) + ")");
         return fail(error, spec, "not a PGM (P5), PPM (P6) or Y4M file");
     } catch (const std::bad_alloc&) {
         out_of_memory(error, spec);
@@ -587,7 +622,8 @@ FrameSource::Next FrameSource::next(GreyImage& out, std::string& error) {
             }
             case Kind::y4m: {
                 const Y4mInfo info{width_, height_, chroma_bytes_};
-                switch (read_y4m_frame(file_.get(), spec_, info, frames_read_, scratch_, out, error)) {
+                switch (
+                    read_y4m_frame(file_.get(), spec_, info, frames_read_, scratch_, out, error)) {
                     case FrameResult::frame: ok = true; break;
                     case FrameResult::end:
                         finished_ = true;

@@ -87,8 +87,8 @@ private:
     uint64_t chroma_bytes_ = 0;
     std::vector<uint8_t> scratch_;
     int frames_read_ = 0;
-    bool finished_ = false;     // end reached
-    bool failed_ = false;       // next() failed; it repeats sticky_error_
+    bool finished_ = false;  // end reached
+    bool failed_ = false;    // next() failed; it repeats sticky_error_
     std::string sticky_error_;
 };
 

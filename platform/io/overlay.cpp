@@ -23,10 +23,12 @@ void RgbImage::set(int x, int y, Rgb c) {
 }
 
 void RgbImage::line(double x1, double y1, double x2, double y2, Rgb c) {
-    const int steps = static_cast<int>(std::ceil(std::max(std::fabs(x2 - x1), std::fabs(y2 - y1)))) + 1;
+    const int steps =
+        static_cast<int>(std::ceil(std::max(std::fabs(x2 - x1), std::fabs(y2 - y1)))) + 1;
     for (int i = 0; i <= steps; ++i) {
         const double t = static_cast<double>(i) / steps;
-        set(static_cast<int>(std::lround(x1 + (x2 - x1) * t)), static_cast<int>(std::lround(y1 + (y2 - y1) * t)), c);
+        set(static_cast<int>(std::lround(x1 + (x2 - x1) * t)),
+            static_cast<int>(std::lround(y1 + (y2 - y1) * t)), c);
     }
 }
 
@@ -34,7 +36,8 @@ void RgbImage::ring(double x, double y, double r, Rgb c) {
     const int steps = static_cast<int>(std::ceil(8 * r)) + 8;
     for (int i = 0; i < steps; ++i) {
         const double a = 6.283185307179586 * i / steps;
-        set(static_cast<int>(std::lround(x + r * std::cos(a))), static_cast<int>(std::lround(y + r * std::sin(a))), c);
+        set(static_cast<int>(std::lround(x + r * std::cos(a))),
+            static_cast<int>(std::lround(y + r * std::sin(a))), c);
     }
 }
 

@@ -1,8 +1,8 @@
 // Feeds a grey frame to a row-streaming detector of core/ (LineDetector, BoardDetector) as a
 // camera would: begin_frame, every row, finish. Host only.
 #pragma once
-#include "io/grey_image.h"
 #include "base/status.h"
+#include "io/grey_image.h"
 
 namespace qt::io {
 

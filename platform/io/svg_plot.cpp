@@ -63,16 +63,18 @@ std::string render(const LinePlot& p) {
     auto sy = [&](double v) {
         return kBottom - std::min(p.y_max, std::max(0.0, v)) / p.y_max * (kBottom - kTop);
     };
-    std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(kWidth) +
-                    "\" height=\"" + num(kHeight) + "\" viewBox=\"0 0 " + num(kWidth) + " " +
-                    num(kHeight) + "\" font-family=\"sans-serif\">\n";
+    std::string s =
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+        num(kWidth) + "\" height=\"" + num(kHeight) + "\" viewBox=\"0 0 " + num(kWidth) + " " +
+        num(kHeight) + "\" font-family=\"sans-serif\">\n";
     s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     s += text(kWidth / 2, 24, p.title, "middle", 16);
     for (const PlotSpan& span : p.spans) {
         const double a = std::max(kLeft, sx(span.x0)), b = std::min(kRight, sx(span.x1));
-        s += "<rect x=\"" + num(a) + "\" y=\"" + num(kTop) + "\" width=\"" + num(std::max(0.0, b - a)) +
-             "\" height=\"" + num(kBottom - kTop) + "\" fill=\"#eeeeee\"/>\n";
+        s += "<rect x=\"" + num(a) + "\" y=\"" + num(kTop) + "\" width=\"" +
+             num(std::max(0.0, b - a)) + "\" height=\"" + num(kBottom - kTop) +
+             "\" fill=\"#eeeeee\"/>\n";
         s += text((a + b) / 2, kTop + 14, span.label, "middle", 11);
     }
     // y ticks and grid every fifth of the axis.
@@ -95,8 +97,7 @@ std::string render(const LinePlot& p) {
     s += line(kLeft, kTop, kLeft, kBottom, "black", 1);
     s += text((kLeft + kRight) / 2, kBottom + 42, p.x_label, "middle", 13);
     const double ymid = (kTop + kBottom) / 2;
-    s += text(20, ymid, p.y_label, "middle", 13,
-              " transform=\"rotate(-90 20 " + num(ymid) + ")\"");
+    s += text(20, ymid, p.y_label, "middle", 13, " transform=\"rotate(-90 20 " + num(ymid) + ")\"");
     // Series: polyline with point markers, and the legend entry.
     for (std::size_t i = 0; i < p.series.size(); ++i) {
         const PlotSeries& ser = p.series[i];

@@ -27,8 +27,8 @@ struct LinePlot {
     std::vector<double> x;        // x of every point, increasing; shared by all series
     std::vector<PlotTick> ticks;  // x ticks; empty: one per x value, labelled with the value
     std::vector<PlotSeries> series;
-    double y_max = 100;              // top of the y axis (ticks every y_max / 5)
-    bool markers = true;             // a dot on every point (off for long series)
+    double y_max = 100;   // top of the y axis (ticks every y_max / 5)
+    bool markers = true;  // a dot on every point (off for long series)
     std::vector<PlotSpan> spans;
 };
 

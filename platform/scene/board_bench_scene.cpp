@@ -5,9 +5,9 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "base/prng.h"
 #include "scene/board_pose.h"
 #include "scene/det_math.h"
-#include "base/prng.h"
 #include "scene/random.h"
 
 namespace qt::scene {
@@ -17,8 +17,8 @@ namespace {
 // One PCG stream per purpose: a board-free frame of the same seed draws the same levels,
 // lighting, clutter and noise as the frame with the board (LineScene's own streams, seeded
 // with the same seed, are different constants).
-constexpr uint64_t kStreamPose = 0xb0a4d9053u, kStreamLook = 0xb0a4d1008u, kStreamClutter = 0xb0a4dc1a7u,
-                   kStreamOcclusion = 0xb0a4d0cc1u;
+constexpr uint64_t kStreamPose = 0xb0a4d9053u, kStreamLook = 0xb0a4d1008u,
+                   kStreamClutter = 0xb0a4dc1a7u, kStreamOcclusion = 0xb0a4d0cc1u;
 
 // Grey level of clutter: in 10..background − 25 or background + 25..board − 50.
 int clutter_level(Pcg32& rng, int background, int board) {
@@ -40,7 +40,8 @@ std::vector<Point2> clutter_shape(Pcg32& rng, int kind, double cx, double cy, do
         for (;;) {  // arcs between the vertices >= 0.45 rad: inner angles >= 0.225 rad
             for (double& t : a) t = uniform(rng, 0, 2 * kPi);
             std::sort(a, a + 3);
-            if (a[1] - a[0] >= 0.45 && a[2] - a[1] >= 0.45 && 2 * kPi - (a[2] - a[0]) >= 0.45) break;
+            if (a[1] - a[0] >= 0.45 && a[2] - a[1] >= 0.45 && 2 * kPi - (a[2] - a[0]) >= 0.45)
+                break;
         }
         for (double t : a) {
             double st, ct;
@@ -50,13 +51,15 @@ std::vector<Point2> clutter_shape(Pcg32& rng, int kind, double cx, double cy, do
     } else if (kind == 1) {
         const double len = uniform(rng, 0.1, 0.45) * base;
         const double wid = std::max(2.0, len / uniform(rng, 6, 14));
-        local = {{-len / 2, -wid / 2}, {len / 2, -wid / 2}, {len / 2, wid / 2}, {-len / 2, wid / 2}};
+        local = {
+            {-len / 2, -wid / 2}, {len / 2, -wid / 2}, {len / 2, wid / 2}, {-len / 2, wid / 2}};
     } else {
         const double a = uniform(rng, 0.08, 0.3) * base, b = a * uniform(rng, 0.5, 1.2);
         double sa, ca;
         det_sincos(det_radians(uniform(rng, 15, 40)), sa, ca);
         const double ox = -(a + b * ca) / 2, oy = -(b * sa) / 2;  // centre the parallelogram
-        local = {{ox, oy}, {ox + a, oy}, {ox + a + b * ca, oy + b * sa}, {ox + b * ca, oy + b * sa}};
+        local = {
+            {ox, oy}, {ox + a, oy}, {ox + a + b * ca, oy + b * sa}, {ox + b * ca, oy + b * sa}};
     }
     std::vector<Point2> out;
     for (const Point2& p : local) out.push_back({cx + p.x * c - p.y * s, cy + p.x * s + p.y * c});
@@ -67,14 +70,17 @@ void check(const BoardBenchOptions& o) {
     const bool ok =
         o.width >= 64 && o.height >= 48 && o.aspect >= 0.25 && o.aspect <= 4 && o.focal_px >= 0 &&
         std::isfinite(o.focal_px) && o.tilt_deg_min >= 0 && o.tilt_deg_min <= o.tilt_deg_max &&
-        o.tilt_deg_max <= 80 && o.rotation_deg_min >= -180 && o.rotation_deg_min <= o.rotation_deg_max &&
-        o.rotation_deg_max <= 180 && o.scale_min > 0 && o.scale_min <= o.scale_max &&
+        o.tilt_deg_max <= 80 && o.rotation_deg_min >= -180 &&
+        o.rotation_deg_min <= o.rotation_deg_max && o.rotation_deg_max <= 180 && o.scale_min > 0 &&
+        o.scale_min <= o.scale_max &&
         o.scale_max <= std::min((o.width - 9.0) / o.width, (o.height - 9.0) / o.height) &&
-        o.noise_sigma_min >= 0 && o.noise_sigma_min <= o.noise_sigma_max && std::isfinite(o.noise_sigma_max) &&
-        o.blur_sigma_min >= 0 && o.blur_sigma_min <= o.blur_sigma_max && o.blur_sigma_max <= 10 &&
-        o.light_gain_min > 0 && o.light_gain_min <= 1 && o.board_level_min >= 130 &&
-        o.board_level_min <= o.board_level_max && o.board_level_max <= 255 && o.clutter_texture >= 0 &&
-        o.clutter_blobs >= 0 && o.clutter_lines >= 0 && o.clutter_shapes >= 0;
+        o.noise_sigma_min >= 0 && o.noise_sigma_min <= o.noise_sigma_max &&
+        std::isfinite(o.noise_sigma_max) && o.blur_sigma_min >= 0 &&
+        o.blur_sigma_min <= o.blur_sigma_max && o.blur_sigma_max <= 10 && o.light_gain_min > 0 &&
+        o.light_gain_min <= 1 && o.board_level_min >= 130 &&
+        o.board_level_min <= o.board_level_max && o.board_level_max <= 255 &&
+        o.clutter_texture >= 0 && o.clutter_blobs >= 0 && o.clutter_lines >= 0 &&
+        o.clutter_shapes >= 0;
     if (!ok) throw std::invalid_argument("make_board_bench_scene: option out of range");
 }
 
@@ -132,8 +138,8 @@ BoardBenchScene make_board_bench_scene(const BoardBenchOptions& o, uint64_t seed
 
     if (o.board) {
         Pcg32 rng(seed, kStreamPose);
-        const PoseRanges ranges{o.tilt_deg_min, o.tilt_deg_max, o.rotation_deg_min, o.rotation_deg_max,
-                                o.scale_min, o.scale_max};
+        const PoseRanges ranges{o.tilt_deg_min,     o.tilt_deg_max, o.rotation_deg_min,
+                                o.rotation_deg_max, o.scale_min,    o.scale_max};
         const BoardPose pose = place_board(cam, o.aspect, ranges, rng, scene.corners);
         scene.tilt_deg = pose.tilt_deg;
         scene.rotation_deg = pose.rotation_deg;
@@ -143,7 +149,8 @@ BoardBenchScene make_board_bench_scene(const BoardBenchOptions& o, uint64_t seed
         ls.add_polygon({scene.corners, scene.corners + 4}, static_cast<uint8_t>(scene.board_level));
         if (o.occlude) {
             Pcg32 occ(seed, kStreamOcclusion);
-            const Occluder arm = arm_occluder(scene.corners, scene.board_level, ArmLimits{}, w, h, occ);
+            const Occluder arm =
+                arm_occluder(scene.corners, scene.board_level, ArmLimits{}, w, h, occ);
             if (arm.side >= 0) {
                 ls.add_polygon(arm.outline, static_cast<uint8_t>(arm.level));
                 scene.occluded_side = arm.side;

@@ -25,7 +25,7 @@ struct BoardBenchOptions {
     int width = 320, height = 240;  // frame, pixels (>= 64 × 48)
     double aspect = 4.0 / 3;        // board (display) width / height, in [0.25, 4]
     double focal_px = 0;            // pinhole focal length, px; 0 = the frame width. Principal
-                                    // point at the frame centre ((width − 1) / 2, (height − 1) / 2).
+        // point at the frame centre ((width − 1) / 2, (height − 1) / 2).
     // Tilt: the angle between the board's normal and the optical axis, degrees, in [0, 80]; the
     // board plane is turned by it about an axis lying in the board plane, of uniform direction.
     double tilt_deg_min = 0, tilt_deg_max = 40;
@@ -38,18 +38,20 @@ struct BoardBenchOptions {
     // bounding box spans `scale` of the frame in its tighter direction. In
     // (0, min((width − 9) / width, (height − 9) / height)] so a fitting position exists.
     double scale_min = 0.15, scale_max = 0.8;
-    double noise_sigma_min = 4, noise_sigma_max = 4;  // Gaussian noise, grey levels, >= 0
+    double noise_sigma_min = 4, noise_sigma_max = 4;    // Gaussian noise, grey levels, >= 0
     double blur_sigma_min = 0.7, blur_sigma_max = 0.7;  // Gaussian blur, px, >= 0
     // Lighting: gain = linear ramp + radial falloff, rescaled so that over the pixel centres
     // its maximum is 1 and its minimum is drawn in [light_gain_min, 1]; in (0, 1], 1 = even.
     double light_gain_min = 0.55;
-    int board_level_min = 170, board_level_max = 240;  // board grey level before lighting, in [130, 255]
+    int board_level_min = 170,
+        board_level_max = 240;  // board grey level before lighting, in [130, 255]
     int clutter_texture = 20;  // peak amplitude of the smooth background texture, grey levels, >= 0
     int clutter_blobs = 6;     // LineScene clutter discs/ellipses, grey 0..board_level − 50
     int clutter_lines = 6;     // straight lines, 1–3 px wide, 8–60 % of min(width, height) long
-    int clutter_shapes = 6;    // triangles, thin bars (length >= 6 × width), parallelograms with a 15–40° angle
-    bool board = true;         // false: a board-free frame (same background, clutter, light, noise)
-    bool occlude = false;      // an arm over part of one side (ignored without a board)
+    int clutter_shapes =
+        6;  // triangles, thin bars (length >= 6 × width), parallelograms with a 15–40° angle
+    bool board = true;     // false: a board-free frame (same background, clutter, light, noise)
+    bool occlude = false;  // an arm over part of one side (ignored without a board)
 };
 
 struct BoardBenchScene {
@@ -72,11 +74,11 @@ struct BoardBenchScene {
     // BoardBenchOptions, tilt_axis_deg the direction of the tilt axis in the board plane before
     // the rotation (degrees from the display's x axis), scale as defined there.
     double tilt_deg = 0, rotation_deg = 0, tilt_axis_deg = 0, scale = 0;
-    double focal_px = 0;                  // px, the focal length used
+    double focal_px = 0;                     // px, the focal length used
     double noise_sigma = 0, blur_sigma = 0;  // grey levels, px: the values drawn
-    double light_gain_min = 1;            // darkest illumination gain over the pixel centres (brightest: 1)
-    int board_level = 0;                  // board grey level before lighting (drawn even without a board)
-    int background_level = 0;             // background grey level before texture and lighting
+    double light_gain_min = 1;  // darkest illumination gain over the pixel centres (brightest: 1)
+    int board_level = 0;        // board grey level before lighting (drawn even without a board)
+    int background_level = 0;   // background grey level before texture and lighting
     // The clutter drawn (px): centre lines of the straight lines, and the shapes' vertices.
     std::vector<TrueSegment> clutter_lines;
     std::vector<std::vector<Point2>> clutter_shapes;

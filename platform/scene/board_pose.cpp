@@ -20,7 +20,9 @@ struct Vec3 {
 Vec3 add(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 Vec3 mul(Vec3 a, double k) { return {a.x * k, a.y * k, a.z * k}; }
 double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Vec3 cross(Vec3 a, Vec3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 
 // Rodrigues: v turned by the angle with sine s and cosine c about the unit axis k.
 Vec3 rotate(Vec3 v, Vec3 k, double s, double c) {
@@ -49,7 +51,8 @@ Board make_board(const BoardPose& pose, double aspect) {
     return b;
 }
 
-void project(const PinholeCamera& cam, const Board& b, double rx, double ry, double z, Point2 out[4]) {
+void project(const PinholeCamera& cam, const Board& b, double rx, double ry, double z,
+             Point2 out[4]) {
     for (int i = 0; i < 4; ++i) {
         const Vec3 p = add(Vec3{z * rx, z * ry, z}, add(mul(b.e1, b.u[i]), mul(b.e2, b.v[i])));
         out[i] = {cam.cx + cam.f * p.x / p.z, cam.cy + cam.f * p.y / p.z};
@@ -98,7 +101,8 @@ double solve_depth(const PinholeCamera& cam, const Board& b, double rx, double r
 
 // The corners of board b, scaled by `scale`, on the ray corrected until the bbox centre lands
 // at (tx, ty).
-void project_centred(const PinholeCamera& cam, const Board& b, double scale, double tx, double ty, Point2 p[4]) {
+void project_centred(const PinholeCamera& cam, const Board& b, double scale, double tx, double ty,
+                     Point2 p[4]) {
     double rx = (tx - cam.cx) / cam.f, ry = (ty - cam.cy) / cam.f;
     for (int it = 0; it < 12; ++it) {
         project(cam, b, rx, ry, solve_depth(cam, b, rx, ry, scale), p);
@@ -109,7 +113,8 @@ void project_centred(const PinholeCamera& cam, const Board& b, double scale, dou
     project(cam, b, rx, ry, solve_depth(cam, b, rx, ry, scale), p);
 }
 
-double shoelace(const Point2 p[4]) {  // Σ x_i·y_{i+1} − x_{i+1}·y_i, px²; < 0: anti-clockwise as seen
+double shoelace(
+    const Point2 p[4]) {  // Σ x_i·y_{i+1} − x_{i+1}·y_i, px²; < 0: anti-clockwise as seen
     double s = 0;
     for (int i = 0; i < 4; ++i) s += p[i].x * p[(i + 1) % 4].y - p[(i + 1) % 4].x * p[i].y;
     return s;
@@ -139,19 +144,21 @@ PinholeCamera centred_camera(int w, int h, double focal_px) {
     return {focal_px > 0 ? focal_px : static_cast<double>(w), (w - 1) / 2.0, (h - 1) / 2.0, w, h};
 }
 
-void project_board_at(const PinholeCamera& cam, double aspect, const BoardPose& pose, double tx, double ty,
-                      Point2 out[4]) {
+void project_board_at(const PinholeCamera& cam, double aspect, const BoardPose& pose, double tx,
+                      double ty, Point2 out[4]) {
     project_centred(cam, make_board(pose, aspect), pose.scale, tx, ty, out);
 }
 
 bool board_fits(const PinholeCamera& cam, const Point2 p[4], double margin) {
     for (int i = 0; i < 4; ++i)
-        if (!(p[i].x >= margin && p[i].x <= cam.w - 1 - margin && p[i].y >= margin && p[i].y <= cam.h - 1 - margin))
+        if (!(p[i].x >= margin && p[i].x <= cam.w - 1 - margin && p[i].y >= margin &&
+              p[i].y <= cam.h - 1 - margin))
             return false;
     return convex_anticlockwise(p);
 }
 
-BoardPose place_board(const PinholeCamera& cam, double aspect, const PoseRanges& r, Pcg32& rng, Point2 corners[4]) {
+BoardPose place_board(const PinholeCamera& cam, double aspect, const PoseRanges& r, Pcg32& rng,
+                      Point2 corners[4]) {
     BoardPose pose;
     pose.tilt_deg = uniform(rng, r.tilt_deg_min, r.tilt_deg_max);
     pose.tilt_axis_deg = uniform(rng, 0, 360);
@@ -169,7 +176,8 @@ BoardPose place_board(const PinholeCamera& cam, double aspect, const PoseRanges&
         const double m = kPlacementMargin;
         const double lx = m + bw / 2, hx = cam.w - 1 - m - bw / 2;
         const double ly = m + bh / 2, hy = cam.h - 1 - m - bh / 2;
-        const double tx = lx <= hx ? uniform(rng, lx, hx) : cam.cx, ty = ly <= hy ? uniform(rng, ly, hy) : cam.cy;
+        const double tx = lx <= hx ? uniform(rng, lx, hx) : cam.cx,
+                     ty = ly <= hy ? uniform(rng, ly, hy) : cam.cy;
         project_centred(cam, b, pose.scale, tx, ty, p);
         box = bbox(p);
         if (board_fits(cam, p, kPlacementMargin)) {
@@ -180,14 +188,17 @@ BoardPose place_board(const PinholeCamera& cam, double aspect, const PoseRanges&
     throw std::runtime_error("place_board: no board placement");
 }
 
-double point_distance(Point2 a, Point2 b) { return std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y)); }
+double point_distance(Point2 a, Point2 b) {
+    return std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+}
 
 double inside_distance(Point2 a, Point2 b, Point2 q) {
     const double len = point_distance(a, b);
     return ((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)) / -len;
 }
 
-std::vector<Point2> arm_tip(Point2 a, Point2 b, double dx, double dy, double cos_phi, double width, double depth) {
+std::vector<Point2> arm_tip(Point2 a, Point2 b, double dx, double dy, double cos_phi, double width,
+                            double depth) {
     const double back = depth / cos_phi;  // along the arm: (d · n) = cos φ
     const Point2 ai{a.x - dx * back, a.y - dy * back}, bi{b.x - dx * back, b.y - dy * back};
     const double cap = 0.5 * width * cos_phi;  // tip depth along the arm, px
@@ -196,12 +207,14 @@ std::vector<Point2> arm_tip(Point2 a, Point2 b, double dx, double dy, double cos
     for (int k = 0; k <= 8; ++k) {
         double sk, ck;
         det_sincos(kPi * (1 - k / 8.0), sk, ck);
-        tip.push_back({m.x + (bi.x - m.x) * ck - dx * cap * sk, m.y + (bi.y - m.y) * ck - dy * cap * sk});
+        tip.push_back(
+            {m.x + (bi.x - m.x) * ck - dx * cap * sk, m.y + (bi.y - m.y) * ck - dy * cap * sk});
     }
     return tip;
 }
 
-std::vector<Point2> arm_outline(Point2 a, Point2 b, const std::vector<Point2>& tip, double dx, double dy, int w, int h) {
+std::vector<Point2> arm_outline(Point2 a, Point2 b, const std::vector<Point2>& tip, double dx,
+                                double dy, int w, int h) {
     const double far = std::max(exit_distance(a, dx, dy, w, h), exit_distance(b, dx, dy, w, h));
     std::vector<Point2> outline{{a.x + dx * far, a.y + dy * far}};
     outline.insert(outline.end(), tip.begin(), tip.end());
@@ -209,7 +222,8 @@ std::vector<Point2> arm_outline(Point2 a, Point2 b, const std::vector<Point2>& t
     return outline;
 }
 
-Occluder arm_occluder(const Point2 c[4], int board_level, const ArmLimits& limits, int w, int h, Pcg32& rng) {
+Occluder arm_occluder(const Point2 c[4], int board_level, const ArmLimits& limits, int w, int h,
+                      Pcg32& rng) {
     Occluder out;
     int eligible[4], n = 0;
     for (int i = 0; i < 4; ++i)
@@ -219,10 +233,12 @@ Occluder arm_occluder(const Point2 c[4], int board_level, const ArmLimits& limit
         const int side = eligible[rng.below(static_cast<uint32_t>(n))];
         const Point2 p = c[side], q = c[(side + 1) % 4];
         const double len = point_distance(p, q);
-        const double end = std::max(limits.end_px, limits.end_fraction * len);  // px visible at each end
+        const double end =
+            std::max(limits.end_px, limits.end_fraction * len);  // px visible at each end
         const double ex = (q.x - p.x) / len, ey = (q.y - p.y) / len;
         const double nx = -ey, ny = ex;  // outward normal for an anti-clockwise-as-seen board
-        const double width = uniform(rng, 10, std::min(limits.max_fraction * len, len - 2 * end));  // along the side, px
+        const double width = uniform(
+            rng, 10, std::min(limits.max_fraction * len, len - 2 * end));  // along the side, px
         const double start = uniform(rng, end, len - end - width);
         double sp, cp;
         det_sincos(det_radians(uniform(rng, -30, 30)), sp, cp);
@@ -230,13 +246,16 @@ Occluder arm_occluder(const Point2 c[4], int board_level, const ArmLimits& limit
         const int level = uniform_int(rng, 20, board_level - 60);
         double extent = 0;  // px, the board's depth across the side
         for (int j = 0; j < 4; ++j) extent = std::max(extent, inside_distance(p, q, c[j]));
-        double depth = uniform(rng, 6, std::max(6.0, std::min(40.0, 0.35 * extent)));  // px, across the side
-        const Point2 a{p.x + ex * start, p.y + ey * start}, b{p.x + ex * (start + width), p.y + ey * (start + width)};
+        double depth =
+            uniform(rng, 6, std::max(6.0, std::min(40.0, 0.35 * extent)));  // px, across the side
+        const Point2 a{p.x + ex * start, p.y + ey * start},
+            b{p.x + ex * (start + width), p.y + ey * (start + width)};
         for (; depth >= 6; depth *= 0.5) {
             const std::vector<Point2> tip = arm_tip(a, b, dx, dy, cp, width, depth);
             bool inside = true;
             for (const Point2& t : tip)
-                for (int j = 0; j < 4; ++j) inside = inside && inside_distance(c[j], c[(j + 1) % 4], t) >= 4;
+                for (int j = 0; j < 4; ++j)
+                    inside = inside && inside_distance(c[j], c[(j + 1) % 4], t) >= 4;
             if (!inside) continue;
             out.outline = arm_outline(a, b, tip, dx, dy, w, h);
             out.level = level;

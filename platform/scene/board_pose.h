@@ -7,8 +7,8 @@
 #pragma once
 #include <vector>
 
-#include "scene/line_scene.h"  // Point2
 #include "base/prng.h"
+#include "scene/line_scene.h"  // Point2
 
 namespace qt::scene {
 
@@ -34,8 +34,8 @@ struct BoardPose {
 // Corners (top-left, bottom-left, bottom-right, top-right of the display: anti-clockwise as
 // seen) of the board at `pose` whose bounding-box centre lies at (tx, ty) px (to about 0.01 px:
 // the viewing ray is corrected 12 times).
-void project_board_at(const PinholeCamera& cam, double aspect, const BoardPose& pose, double tx, double ty,
-                      Point2 out[4]);
+void project_board_at(const PinholeCamera& cam, double aspect, const BoardPose& pose, double tx,
+                      double ty, Point2 out[4]);
 
 // Whether every corner lies at least `margin` px inside the outermost pixel centres, and the
 // quadrangle is convex and anti-clockwise as seen.
@@ -60,8 +60,9 @@ struct ArmLimits {
 };
 
 struct Occluder {
-    int side = -1;             // corners[side] -> corners[side + 1 mod 4]; -1: none placed
-    double from = 0, to = 0;   // the covered part of that side, fractions of its length from corners[side]
+    int side = -1;  // corners[side] -> corners[side + 1 mod 4]; -1: none placed
+    double from = 0,
+           to = 0;  // the covered part of that side, fractions of its length from corners[side]
     std::vector<Point2> outline;  // polygon to paint, px
     int level = 0;                // its grey level
 };
@@ -69,14 +70,17 @@ struct Occluder {
 // An arm from beyond the frame edge over part of one side (>= 30 px long) of an anti-clockwise
 // board: a band with a rounded tip whose outer part lies wholly outside the board and whose tip
 // stays >= 4 px inside the other sides; grey 20..board_level − 60. side −1 when none fits.
-Occluder arm_occluder(const Point2 corners[4], int board_level, const ArmLimits& limits, int w, int h, Pcg32& rng);
+Occluder arm_occluder(const Point2 corners[4], int board_level, const ArmLimits& limits, int w,
+                      int h, Pcg32& rng);
 
 // The parts of an arm that crosses a side at a -> b (the covered part, px) along the outward
 // unit direction (dx, dy), which makes the angle φ with the side's outward normal:
 // arm_tip: the rounded tip `depth` px inside the side (a half ellipse from a's side to b's,
 // 9 points); arm_outline: the tip joined to two points beyond a w × h frame.
-std::vector<Point2> arm_tip(Point2 a, Point2 b, double dx, double dy, double cos_phi, double width, double depth);
-std::vector<Point2> arm_outline(Point2 a, Point2 b, const std::vector<Point2>& tip, double dx, double dy, int w, int h);
+std::vector<Point2> arm_tip(Point2 a, Point2 b, double dx, double dy, double cos_phi, double width,
+                            double depth);
+std::vector<Point2> arm_outline(Point2 a, Point2 b, const std::vector<Point2>& tip, double dx,
+                                double dy, int w, int h);
 
 // Signed distance of q from the side a -> b of an anti-clockwise-as-seen polygon, px;
 // positive inside.

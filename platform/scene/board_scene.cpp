@@ -42,7 +42,9 @@ io::GreyImage render_board(const BoardScene& scene) {
     io::GreyImage img(scene.width, scene.height);
     Pcg32 rng(scene.seed);
     // Low-contrast blobs: centre (px), radius (px), level offset (grey levels).
-    struct Blob { int x, y, r, level; } blobs[12];
+    struct Blob {
+        int x, y, r, level;
+    } blobs[12];
     for (Blob& b : blobs) {
         b.x = static_cast<int>(rng.below(static_cast<uint32_t>(scene.width)));
         b.y = static_cast<int>(rng.below(static_cast<uint32_t>(scene.height)));

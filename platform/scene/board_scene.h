@@ -17,9 +17,9 @@ struct SubPixel {
 struct BoardScene {
     int width = 640;
     int height = 480;
-    SubPixel corners[4] = {};  // convex, any winding
-    uint8_t board_level = 220;   // grey level of the board
-    uint8_t noise_amplitude = 6; // uniform noise in [-a, a] grey levels
+    SubPixel corners[4] = {};     // convex, any winding
+    uint8_t board_level = 220;    // grey level of the board
+    uint8_t noise_amplitude = 6;  // uniform noise in [-a, a] grey levels
     uint64_t seed = 1;
 };
 

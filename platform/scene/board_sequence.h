@@ -4,8 +4,8 @@
 // quadrangle-3kf's frames 41–43, where those sides are not extracted), so a tracker has to
 // predict them.
 #pragma once
-#include "scene/board_scene.h"
 #include "io/grey_image.h"
+#include "scene/board_scene.h"
 
 namespace qt::scene {
 
@@ -18,9 +18,9 @@ constexpr int kFirstHiddenFrame = 5, kLastHiddenFrame = 7;
 constexpr double kBarHalfWidth = 24;
 
 struct BoardSequenceFrame {
-    BoardScene scene;   // the board as generated: corners (1/256 px) top-left, top-right,
-                        // bottom-right, bottom-left
-    io::GreyImage image;    // with the bars on hidden frames
+    BoardScene scene;     // the board as generated: corners (1/256 px) top-left, top-right,
+                          // bottom-right, bottom-left
+    io::GreyImage image;  // with the bars on hidden frames
     bool hidden = false;  // bars over the top and bottom sides
 };
 

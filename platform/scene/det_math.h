@@ -8,9 +8,9 @@ namespace qt::scene {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double det_exp(double x);                        // accurate to ~1e-15 relative for |x| < 700
-double det_log(double x);                        // x > 0
-void det_sincos(double x, double& s, double& c); // x in radians, |x| < 1e6
+double det_exp(double x);                         // accurate to ~1e-15 relative for |x| < 700
+double det_log(double x);                         // x > 0
+void det_sincos(double x, double& s, double& c);  // x in radians, |x| < 1e6
 inline double det_radians(double deg) { return deg * kPi / 180.0; }
 
 }  // namespace qt::scene

@@ -45,7 +45,9 @@ double field(uint64_t h, int k) { return static_cast<double>((h >> (12 * k)) & 4
 // The cell of x on a lattice of the given step, multiplying by its reciprocal (cheaper than a
 // division; a point within an ulp of a cell edge may go either way, and no feature reaches an
 // edge).
-int64_t cell(double x, double inverse_step) { return static_cast<int64_t>(std::floor(x * inverse_step)); }
+int64_t cell(double x, double inverse_step) {
+    return static_cast<int64_t>(std::floor(x * inverse_step));
+}
 
 // The ground's grey level at (X, Y) metres, before anti-aliasing and noise. Keeps the last
 // column and field it found: neighbouring samples mostly fall in the same ones.
@@ -65,7 +67,8 @@ public:
 
 private:
     uint64_t hash(uint64_t layer, int64_t i, int64_t j) const {
-        return mix64(key_ + layer * 0xD6E8FEB86659FD93ULL + static_cast<uint64_t>(i) * 0x9E3779B97F4A7C15ULL +
+        return mix64(key_ + layer * 0xD6E8FEB86659FD93ULL +
+                     static_cast<uint64_t>(i) * 0x9E3779B97F4A7C15ULL +
                      static_cast<uint64_t>(j) * 0xC2B2AE3D27D4EB4FULL);
     }
     double column_edge(int64_t c, bool& road) const {
@@ -123,7 +126,8 @@ private:
         }
         bottom_ = edge_r;
         top_ = edge_n;
-        field_level_ = kFieldLow + static_cast<int>(kFieldRange * field(hash(kFieldLayer, column_, r), 0));
+        field_level_ =
+            kFieldLow + static_cast<int>(kFieldRange * field(hash(kFieldLayer, column_, r), 0));
         have_row_ = true;
     }
 
@@ -154,7 +158,8 @@ private:
         const double cy = j * kBlobCellM + r + (kBlobCellM - 2 * r) * field(h, 3);
         const double dx = x - cx, dy = y - cy;
         const bool square = (h >> 60) & 1u;
-        const bool inside = square ? std::fabs(dx) <= r && std::fabs(dy) <= r : dx * dx + dy * dy <= r * r;
+        const bool inside =
+            square ? std::fabs(dx) <= r && std::fabs(dy) <= r : dx * dx + dy * dy <= r * r;
         if (!inside) return base;
         const int step = 35 + static_cast<int>(30 * field(h, 4));
         return std::clamp(base >= 110 ? base - step : base + step, kBlobLow, kBlobHigh);
@@ -176,7 +181,7 @@ private:
 
 // ---- Vehicle and flare --------------------------------------------------------------------
 
-constexpr int kBodyLevel = 25, kRoofLevel = 235;  // outside the terrain's 35 .. 210
+constexpr int kBodyLevel = 25, kRoofLevel = 235;                  // outside the terrain's 35 .. 210
 constexpr double kRoofLengthShare = 0.55, kRoofWidthShare = 0.7;  // of the body's size
 // Flare: a core of kFlareCoreLevel within kFlareCorePx of its centre, a halo fading out to
 // kFlareHaloPx; its centre drifts kFlareDriftPx across the vehicle's centre over the spell, so
@@ -199,7 +204,7 @@ double ramp(double u, double a) {
     return 1 - v * (1 - u) * (1 - u) / (2 * a);
 }
 
-double det_atan(double x) {  // Newton on sin(a) − x·cos(a) = 0, for x >= 0
+double det_atan(double x) {             // Newton on sin(a) − x·cos(a) = 0, for x >= 0
     double a = x / (1 + 0.28 * x * x);  // within 0.005 rad
     for (int i = 0; i < 6; ++i) {
         double s = 0, c = 0;
@@ -237,14 +242,15 @@ void invert(const double m[9], double r[9]) {  // adjugate; the scale does not m
 
 void multiply(const double a[9], const double b[9], double r[9]) {
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) r[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+        for (int j = 0; j < 3; ++j)
+            r[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
 }
 
 }  // namespace
 
 struct GroundSequence::State {
-    double g[9];            // ground → image, third row = depth (m)
-    double tx, ty;          // vehicle centre on the ground, m
+    double g[9];              // ground → image, third row = depth (m)
+    double tx, ty;            // vehicle centre on the ground, m
     double along_x, along_y;  // vehicle heading, unit vector on the ground
 };
 
@@ -265,9 +271,10 @@ GroundSequence::State GroundSequence::state_at(double t) const {
     // Camera orientation: rows of the world → camera rotation. x right (the heading's right),
     // z the optical axis (tilted forward from nadir), y = z × x (image down).
     const double altitude =
-        c.altitude_m * (1 + c.altitude_variation * sine(2 * kPi * t / c.altitude_period_frames + altitude_phase_));
-    const double tilt =
-        det_radians(c.tilt_deg + c.tilt_variation_deg * sine(2 * kPi * t / c.tilt_period_frames + tilt_phase_));
+        c.altitude_m *
+        (1 + c.altitude_variation * sine(2 * kPi * t / c.altitude_period_frames + altitude_phase_));
+    const double tilt = det_radians(
+        c.tilt_deg + c.tilt_variation_deg * sine(2 * kPi * t / c.tilt_period_frames + tilt_phase_));
     double sp = 0, cp = 0, st = 0, ct = 0;
     det_sincos(yaw0_ + det_radians(c.yaw_rate_deg) * t, sp, cp);
     det_sincos(tilt, st, ct);
@@ -280,7 +287,8 @@ GroundSequence::State GroundSequence::state_at(double t) const {
     const double cx = (c.width - 1) / 2.0, cy = (c.height - 1) / 2.0;
     const double a = c.wander_px * sine(2 * kPi * t / 170 + wander_phase_x_) / c.focal_px;
     const double b = c.wander_px * sine(2 * kPi * t / 230 + wander_phase_y_) / c.focal_px;
-    const double d[3] = {a * rx[0] + b * ry[0] + rz[0], a * rx[1] + b * ry[1] + rz[1], a * rx[2] + b * ry[2] + rz[2]};
+    const double d[3] = {a * rx[0] + b * ry[0] + rz[0], a * rx[1] + b * ry[1] + rz[1],
+                         a * rx[2] + b * ry[2] + rz[2]};
     const double mu = altitude / -d[2];
     const double cam[3] = {s.tx - mu * d[0], s.ty - mu * d[1], altitude};
 
@@ -317,7 +325,8 @@ GroundSequence::State GroundSequence::state_at(double t) const {
 double GroundSequence::swing_at(double t) const {
     if (config_.out_of_view_frames <= 0) return 0;
     const double a = kSwingAccelFrames / swing_frames_;
-    return std::min(ramp((t - rise_t0_) / swing_frames_, a), 1 - ramp((t - fall_t0_) / swing_frames_, a));
+    return std::min(ramp((t - rise_t0_) / swing_frames_, a),
+                    1 - ramp((t - fall_t0_) / swing_frames_, a));
 }
 
 namespace {
@@ -326,7 +335,8 @@ struct Box {
     double x0, y0, x1, y1;  // image bounding box of the vehicle, px
 };
 
-Box vehicle_box(const double g[9], double tx, double ty, double ax, double ay, double length, double width) {
+Box vehicle_box(const double g[9], double tx, double ty, double ax, double ay, double length,
+                double width) {
     Box b{1e300, 1e300, -1e300, -1e300};
     for (int i = 0; i < 4; ++i) {
         const double l = (i & 1 ? 0.5 : -0.5) * length, w = (i & 2 ? 0.5 : -0.5) * width;
@@ -344,7 +354,8 @@ Box vehicle_box(const double g[9], double tx, double ty, double ax, double ay, d
 
 double GroundSequence::box_excess(double t) const {
     const State s = state_at(t);
-    const Box b = vehicle_box(s.g, s.tx, s.ty, s.along_x, s.along_y, config_.target_length_m, config_.target_width_m);
+    const Box b = vehicle_box(s.g, s.tx, s.ty, s.along_x, s.along_y, config_.target_length_m,
+                              config_.target_width_m);
     const double right = config_.width - 0.5, bottom = config_.height - 0.5;
     return std::max({-0.5 - b.x0, b.x1 - right, -0.5 - b.y0, b.y1 - bottom});
 }
@@ -355,7 +366,8 @@ double GroundSequence::box_excess(double t) const {
 // (swing_at takes the lower), so they are solved in turn a few times.
 void GroundSequence::time_swing() {
     const GroundSequenceConfig& c = config_;
-    const double out_t = c.out_of_view_start - 0.5, in_t = c.out_of_view_start + c.out_of_view_frames - 0.5;
+    const double out_t = c.out_of_view_start - 0.5,
+                 in_t = c.out_of_view_start + c.out_of_view_frames - 0.5;
     rise_t0_ = out_t - swing_frames_ / 2;
     fall_t0_ = 1e9;
     for (int round = 0; round < 4; ++round) {
@@ -405,7 +417,8 @@ GroundSequence::GroundSequence(const GroundSequenceConfig& config) : config_(con
     // A full swing carries the aim point from home past the border by out_of_view_depth_px
     // (measured at the image centre's scale), whatever the wander.
     const double half = side == 1 ? c.height / 2.0 : c.width / 2.0;
-    const double swing_px = (half + c.wander_px + c.out_of_view_depth_px) / std::max(std::fabs(side_x_), std::fabs(side_y_));
+    const double swing_px = (half + c.wander_px + c.out_of_view_depth_px) /
+                            std::max(std::fabs(side_x_), std::fabs(side_y_));
     swing_rad_ = det_atan(swing_px / c.focal_px);
     swing_frames_ = swing_rad_ * c.focal_px / c.swing_speed_px + kSwingAccelFrames;
     if (c.out_of_view_frames > 0) time_swing();
@@ -413,7 +426,8 @@ GroundSequence::GroundSequence(const GroundSequenceConfig& config) : config_(con
     for (int f = 0; f < c.frames; ++f) {
         const bool out = f >= c.out_of_view_start && f < c.out_of_view_start + c.out_of_view_frames;
         if ((box_excess(f) > 0) != out)
-            throw std::invalid_argument("GroundSequenceConfig: the out-of-view spell cannot be produced");
+            throw std::invalid_argument(
+                "GroundSequenceConfig: the out-of-view spell cannot be produced");
     }
 }
 
@@ -429,13 +443,15 @@ bool GroundSequence::flare_offset(int frame, double& dx, double& dy) const {
 }
 
 GroundTruth GroundSequence::truth(int frame) const {
-    if (frame < 0 || frame >= config_.frames) throw std::out_of_range("GroundSequence::truth: frame");
+    if (frame < 0 || frame >= config_.frames)
+        throw std::out_of_range("GroundSequence::truth: frame");
     const GroundSequenceConfig& c = config_;
     const State s = state_at(frame);
     GroundTruth gt;
     std::copy(s.g, s.g + 9, gt.h_ground_to_image);
     apply(s.g, s.tx, s.ty, gt.target_x, gt.target_y);
-    const Box b = vehicle_box(s.g, s.tx, s.ty, s.along_x, s.along_y, c.target_length_m, c.target_width_m);
+    const Box b =
+        vehicle_box(s.g, s.tx, s.ty, s.along_x, s.along_y, c.target_length_m, c.target_width_m);
     gt.target_w = static_cast<int>(std::floor(b.x1 - b.x0 + 0.5));
     gt.target_h = static_cast<int>(std::floor(b.y1 - b.y0 + 0.5));
     gt.in_view = box_excess(frame) <= 0;
@@ -454,7 +470,8 @@ GroundTruth GroundSequence::truth(int frame) const {
 }
 
 io::GreyImage GroundSequence::render(int frame) const {
-    if (frame < 0 || frame >= config_.frames) throw std::out_of_range("GroundSequence::render: frame");
+    if (frame < 0 || frame >= config_.frames)
+        throw std::out_of_range("GroundSequence::render: frame");
     const GroundSequenceConfig& c = config_;
     const State s = state_at(frame);
     double inv[9];
@@ -471,12 +488,16 @@ io::GreyImage GroundSequence::render(int frame) const {
     flare_y += target_y;
 
     // Pixels whose samples may hit the vehicle: its image box and a pixel around it.
-    const Box vb = vehicle_box(s.g, s.tx, s.ty, s.along_x, s.along_y, c.target_length_m, c.target_width_m);
-    const auto pixel = [](double v, int size) { return static_cast<int>(std::clamp(std::floor(v + 0.5), -2.0, size + 1.0)); };
+    const Box vb =
+        vehicle_box(s.g, s.tx, s.ty, s.along_x, s.along_y, c.target_length_m, c.target_width_m);
+    const auto pixel = [](double v, int size) {
+        return static_cast<int>(std::clamp(std::floor(v + 0.5), -2.0, size + 1.0));
+    };
     const int vx0 = pixel(vb.x0, c.width) - 1, vx1 = pixel(vb.x1, c.width) + 1;
     const int vy0 = pixel(vb.y0, c.height) - 1, vy1 = pixel(vb.y1, c.height) + 1;
 
-    Gaussian noise(Pcg32(mix64(c.seed) ^ static_cast<uint64_t>(frame), 0x6E6F697365ULL));  // stream "noise"
+    Gaussian noise(
+        Pcg32(mix64(c.seed) ^ static_cast<uint64_t>(frame), 0x6E6F697365ULL));  // stream "noise"
     io::GreyImage img(c.width, c.height);
     constexpr double kSub[3] = {-1.0 / 3, 0, 1.0 / 3};  // 3×3 samples per pixel
     for (int y = 0; y < c.height; ++y) {
@@ -491,9 +512,12 @@ io::GreyImage GroundSequence::render(int frame) const {
                     const double gy = (inv[3] * u + inv[4] * v + inv[5]) * w;
                     if (near_vehicle) {
                         const double dx = gx - s.tx, dy = gy - s.ty;
-                        const double along = dx * s.along_x + dy * s.along_y, side = dy * s.along_x - dx * s.along_y;
+                        const double along = dx * s.along_x + dy * s.along_y,
+                                     side = dy * s.along_x - dx * s.along_y;
                         if (std::fabs(along) <= half_len && std::fabs(side) <= half_wid) {
-                            sum += std::fabs(along) <= roof_len && std::fabs(side) <= roof_wid ? kRoofLevel : kBodyLevel;
+                            sum += std::fabs(along) <= roof_len && std::fabs(side) <= roof_wid
+                                       ? kRoofLevel
+                                       : kBodyLevel;
                             continue;
                         }
                     }

@@ -40,36 +40,36 @@ namespace qt::scene {
 struct GroundSequenceConfig {
     int width = 320, height = 240;  // px
     int frames = 360;
-    uint64_t seed = 1;              // terrain, vehicle start, wander, exit side, flare drift
-    int out_of_view_start = 110;    // first frame with the vehicle's box not wholly in the image
-    int out_of_view_frames = 100;   // frames until its box is wholly inside again (0: never out)
-    int occlusion_start = 40;       // first frame the flare covers the vehicle
-    int occlusion_frames = 12;      // (0: no flare)
-    double noise_sigma = 2.0;       // Gaussian pixel noise, grey levels
+    uint64_t seed = 1;             // terrain, vehicle start, wander, exit side, flare drift
+    int out_of_view_start = 110;   // first frame with the vehicle's box not wholly in the image
+    int out_of_view_frames = 100;  // frames until its box is wholly inside again (0: never out)
+    int occlusion_start = 40;      // first frame the flare covers the vehicle
+    int occlusion_frames = 12;     // (0: no flare)
+    double noise_sigma = 2.0;      // Gaussian pixel noise, grey levels
 
     // Camera.
-    double focal_px = 300;              // focal length: 56° horizontal field of view at 320 px
-    double altitude_m = 100;            // mean altitude: ~2.5 px/m at the image centre
-    double altitude_variation = 0.10;   // altitude = mean·(1 ± this), a sinusoid …
-    int altitude_period_frames = 240;   // … of this period
-    double tilt_deg = 30;               // optical axis from nadir, forward (perspective)
-    double tilt_variation_deg = 3;      // tilt ± this, a sinusoid …
-    int tilt_period_frames = 300;       // … of this period
-    double yaw_rate_deg = 0.2;          // heading change, degrees a frame (image rotation)
+    double focal_px = 300;             // focal length: 56° horizontal field of view at 320 px
+    double altitude_m = 100;           // mean altitude: ~2.5 px/m at the image centre
+    double altitude_variation = 0.10;  // altitude = mean·(1 ± this), a sinusoid …
+    int altitude_period_frames = 240;  // … of this period
+    double tilt_deg = 30;              // optical axis from nadir, forward (perspective)
+    double tilt_variation_deg = 3;     // tilt ± this, a sinusoid …
+    int tilt_period_frames = 300;      // … of this period
+    double yaw_rate_deg = 0.2;         // heading change, degrees a frame (image rotation)
 
     // Vehicle (the target): constant speed, straight on by default (a turn is an option).
-    double target_speed_m = 0.2;        // metres a frame (5 m/s at 25 frames/s)
-    double target_turn_deg = 0.0;       // heading change, degrees a frame (0: a straight road)
+    double target_speed_m = 0.2;   // metres a frame (5 m/s at 25 frames/s)
+    double target_turn_deg = 0.0;  // heading change, degrees a frame (0: a straight road)
     double target_length_m = 4.0, target_width_m = 2.8;  // ~10 × 7 px at the default scale
 
     // Where the vehicle appears in the image.
-    double wander_px = 15;              // slow drift of the aim point about the image centre, px
-    double swing_speed_px = 3.0;        // top speed of the swing out of view and back, px a frame
-    double out_of_view_depth_px = 60;   // a full swing puts the vehicle's centre this far
-                                        // beyond the image border, px
+    double wander_px = 15;             // slow drift of the aim point about the image centre, px
+    double swing_speed_px = 3.0;       // top speed of the swing out of view and back, px a frame
+    double out_of_view_depth_px = 60;  // a full swing puts the vehicle's centre this far
+                                       // beyond the image border, px
 
-    bool draw_target = true;            // false: the ground and the flare only (tests isolate the
-                                        // vehicle's pixels by difference)
+    bool draw_target = true;  // false: the ground and the flare only (tests isolate the
+                              // vehicle's pixels by difference)
 };
 
 struct GroundTruth {
@@ -97,8 +97,8 @@ public:
     int frames() const { return config_.frames; }
     const GroundSequenceConfig& config() const { return config_; }
 
-    GroundTruth truth(int frame) const;  // 0 <= frame < frames(), else std::out_of_range
-    io::GreyImage render(int frame) const;   // deterministic: same config → same bytes
+    GroundTruth truth(int frame) const;     // 0 <= frame < frames(), else std::out_of_range
+    io::GreyImage render(int frame) const;  // deterministic: same config → same bytes
 
 private:
     struct State;  // camera and vehicle at a (possibly fractional) time, in frames
@@ -115,7 +115,7 @@ private:
     double yaw0_ = 0;                                       // camera heading at frame 0, rad
     double altitude_phase_ = 0, tilt_phase_ = 0;            // rad
     double wander_phase_x_ = 0, wander_phase_y_ = 0;        // rad
-    double side_x_ = 0, side_y_ = 0;  // unit direction of the swing in the image
+    double side_x_ = 0, side_y_ = 0;      // unit direction of the swing in the image
     double flare_dx_ = 0, flare_dy_ = 0;  // unit direction of the flare's drift over the vehicle
     // The swing: the camera turns by up to swing_rad_; one ramp lasts swing_frames_; the ramp
     // out starts at rise_t0_, the ramp back at fall_t0_ (frames).

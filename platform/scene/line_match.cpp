@@ -9,7 +9,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double orientation_deg(Point2 a, Point2 b) { return std::atan2(b.y - a.y, b.x - a.x) * 180.0 / kPi; }
+double orientation_deg(Point2 a, Point2 b) {
+    return std::atan2(b.y - a.y, b.x - a.x) * 180.0 / kPi;
+}
 
 double orientation_error(double a, double b) {
     const double d = std::fmod(std::fabs(a - b), 180.0);
@@ -36,7 +38,8 @@ MatchResult match_lines(const std::vector<TrueSegment>& truth,
         if (dist(t.a, t.b) < rule.min_length) continue;
         ++r.scored;
         for (const DetectedLine& d : detected) {
-            const double angle = orientation_error(orientation_deg(t.a, t.b), orientation_deg(d.a, d.b));
+            const double angle =
+                orientation_error(orientation_deg(t.a, t.b), orientation_deg(d.a, d.b));
             const double ends = std::min(std::max(dist(d.a, t.a), dist(d.b, t.b)),
                                          std::max(dist(d.a, t.b), dist(d.b, t.a)));
             if (angle <= rule.max_angle_deg && ends <= rule.max_endpoint_px) {
@@ -52,8 +55,10 @@ MatchResult match_lines(const std::vector<TrueSegment>& truth,
     for (const DetectedLine& d : detected) {
         bool on_truth = false;
         for (const TrueSegment& t : truth)
-            on_truth = on_truth || (dist_to_segment(d.a, t.a, t.b) <= 3 && dist_to_segment(d.b, t.a, t.b) <= 3 &&
-                                    orientation_error(orientation_deg(t.a, t.b), orientation_deg(d.a, d.b)) <= 3);
+            on_truth =
+                on_truth ||
+                (dist_to_segment(d.a, t.a, t.b) <= 3 && dist_to_segment(d.b, t.a, t.b) <= 3 &&
+                 orientation_error(orientation_deg(t.a, t.b), orientation_deg(d.a, d.b)) <= 3);
         if (!on_truth) ++r.false_positives;
     }
     return r;

@@ -18,12 +18,12 @@ struct MatchRule {
 };
 
 struct MatchResult {
-    int scored = 0;           // truth segments at least min_length long
-    int found = 0;            // of those, matched by some detected line
-    int detected = 0;         // detected lines
-    int false_positives = 0;  // detected lines that lie on no truth segment (see line_match.cpp)
-    double worst_angle_deg = 0;     // over matched segments
-    double worst_endpoint_px = 0;   // over matched segments
+    int scored = 0;              // truth segments at least min_length long
+    int found = 0;               // of those, matched by some detected line
+    int detected = 0;            // detected lines
+    int false_positives = 0;     // detected lines that lie on no truth segment (see line_match.cpp)
+    double worst_angle_deg = 0;  // over matched segments
+    double worst_endpoint_px = 0;  // over matched segments
 };
 
 MatchResult match_lines(const std::vector<TrueSegment>& truth,

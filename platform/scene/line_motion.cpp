@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "scene/det_math.h"
 #include "base/prng.h"
+#include "scene/det_math.h"
 #include "scene/random.h"
 
 namespace qt::scene {
@@ -15,8 +15,8 @@ namespace {
 // One PCG stream per purpose, so that e.g. adding noise does not change the segments.
 constexpr uint64_t kStreamSegments = 0x5e6u, kStreamAngles = 0xa9137u, kStreamNoise = 0x90153u;
 
-constexpr double kQ16 = 65536.0;          // q16_16 raw units per pixel
-constexpr double kTurn = 4294967296.0;    // binary-angle units per turn
+constexpr double kQ16 = 65536.0;        // q16_16 raw units per pixel
+constexpr double kTurn = 4294967296.0;  // binary-angle units per turn
 
 q16_16 to_q16(double px) { return q16_16::from_raw(std::llround(px * kQ16)); }
 
@@ -57,7 +57,8 @@ Segment measured_segment(const GtSegment& s) {
     m.y2 = to_q16(s.y2);
     m.rho = to_q16(rho);
     // llround(1.0 · 2^32) wraps to 0 under the mask: one turn is angle 0.
-    m.theta = static_cast<angle_t>(static_cast<uint64_t>(std::llround(turns * kTurn)) & 0xFFFFFFFFu);
+    m.theta =
+        static_cast<angle_t>(static_cast<uint64_t>(std::llround(turns * kTurn)) & 0xFFFFFFFFu);
     m.cx = to_q16(rho * nx);
     m.cy = to_q16(rho * ny);
     m.points = 0;
@@ -110,11 +111,13 @@ std::vector<GtSegment> random_segments(uint64_t seed, int count, int width, int 
     return out;
 }
 
-GtTrack translation_track(const GtSegment& base, double direction_deg, double speed_px, int frames) {
+GtTrack translation_track(const GtSegment& base, double direction_deg, double speed_px,
+                          int frames) {
     double s, c;
     det_sincos(det_radians(direction_deg), s, c);
     GtTrack track;
-    for (int k = 0; k < frames; ++k) track.push_back(moved(base, k * speed_px * c, k * speed_px * s));
+    for (int k = 0; k < frames; ++k)
+        track.push_back(moved(base, k * speed_px * c, k * speed_px * s));
     return track;
 }
 
@@ -163,7 +166,8 @@ double track_mean_overlap(const GtTrack& track, const LineTrackerParams& params,
     return sum / static_cast<double>(track.size() - 1);
 }
 
-TranslationTable translation_experiment(const LineTrackerParams& params, const MotionOptions& options) {
+TranslationTable translation_experiment(const LineTrackerParams& params,
+                                        const MotionOptions& options) {
     TranslationTable t;
     t.speeds = {1, 2, 3};
     for (int d = 0; d < 360; d += 15) t.directions_deg.push_back(d);
@@ -174,7 +178,8 @@ TranslationTable translation_experiment(const LineTrackerParams& params, const M
         for (double dir : t.directions_deg) {
             double sum = 0;
             for (const GtSegment& s : segments)
-                sum += track_mean_overlap(translation_track(s, dir, speed), params, options, stream++);
+                sum +=
+                    track_mean_overlap(translation_track(s, dir, speed), params, options, stream++);
             row.push_back(sum / static_cast<double>(segments.size()));
         }
         t.overlap.push_back(row);
@@ -195,7 +200,8 @@ RotationTable rotation_experiment(const LineTrackerParams& params, Point2 centre
         for (double w : t.omegas_deg) {
             double sum = 0;
             for (double th0 : starts)
-                sum += track_mean_overlap(rotation_track(centre, r, th0, w), params, options, stream++);
+                sum += track_mean_overlap(rotation_track(centre, r, th0, w), params, options,
+                                          stream++);
             row.push_back(sum / static_cast<double>(starts.size()));
         }
         t.overlap.push_back(row);

@@ -1,8 +1,8 @@
 // The synthetic line motions of quadrangle-3kf §3 and its score, the overlap ratio, in double
-// precision, for benchmarking the line tracker (core/tracking/line_tracker.h) against exact ground truth.
-// Host only (heap, double). Randomness comes from qt::Pcg32 and sines/cosines from det_math.h,
-// so the data are the same on every platform; measured_segment() uses std::atan2, whose last
-// ulp may differ between libms (it can flip a binary angle's last unit, 8e-8°, very rarely).
+// precision, for benchmarking the line tracker (core/tracking/line_tracker.h) against exact ground
+// truth. Host only (heap, double). Randomness comes from qt::Pcg32 and sines/cosines from
+// det_math.h, so the data are the same on every platform; measured_segment() uses std::atan2, whose
+// last ulp may differ between libms (it can flip a binary angle's last unit, 8e-8°, very rarely).
 //
 // Coordinates: pixels, pixel centres at integers, x to the right, y down; angles in degrees
 // measured from +x towards +y (clockwise on screen), as in core/lines/segment.h.
@@ -11,9 +11,9 @@
 
 #include <vector>
 
+#include "lines/segment.h"
 #include "scene/line_scene.h"  // Point2
 #include "tracking/line_tracker.h"
-#include "lines/segment.h"
 
 namespace qt::scene {
 
@@ -80,13 +80,14 @@ struct MotionOptions {
 // end-point noise of options.noise_sigma drawn from noise_stream (each track its own stream, so
 // every tracker sees the same noise). Throws std::invalid_argument for fewer than 2 frames.
 double track_mean_overlap(const GtTrack& track, const LineTrackerParams& params,
-                          const MotionOptions& options = MotionOptions{}, uint64_t noise_stream = 0);
+                          const MotionOptions& options = MotionOptions{},
+                          uint64_t noise_stream = 0);
 
 // Experiment 1: overlap[s][d] = mean of track_mean_overlap over the random segments moving at
 // speeds[s] px/frame in direction directions_deg[d].
 struct TranslationTable {
-    std::vector<double> speeds;          // px/frame: 1, 2, 3
-    std::vector<double> directions_deg;  // 0, 15, ..., 345
+    std::vector<double> speeds;                // px/frame: 1, 2, 3
+    std::vector<double> directions_deg;        // 0, 15, ..., 345
     std::vector<std::vector<double>> overlap;  // [speed][direction], [0, 1]
 };
 TranslationTable translation_experiment(const LineTrackerParams& params,
@@ -95,9 +96,9 @@ TranslationTable translation_experiment(const LineTrackerParams& params,
 // Experiment 2 about `centre`: overlap[i][j] = mean of track_mean_overlap over the start angles
 // for radius radii[i] px and turn rate omegas_deg[j] °/frame.
 struct RotationTable {
-    Point2 centre;                       // px
-    std::vector<double> radii;           // px: 10, 50, 100
-    std::vector<double> omegas_deg;      // °/frame: 1, 2, 4, 8, 16
+    Point2 centre;                             // px
+    std::vector<double> radii;                 // px: 10, 50, 100
+    std::vector<double> omegas_deg;            // °/frame: 1, 2, 4, 8, 16
     std::vector<std::vector<double>> overlap;  // [radius][omega], [0, 1]
 };
 RotationTable rotation_experiment(const LineTrackerParams& params, Point2 centre,

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "scene/det_math.h"
 #include "base/prng.h"
+#include "scene/det_math.h"
 #include "scene/random.h"
 
 namespace qt::scene {
@@ -22,7 +22,7 @@ constexpr uint64_t kStreamTexture = 0x7e47u, kStreamClutter = 0xc1a77u, kStreamN
 
 // Grey levels at least 60 from the background, kept in 10..245 so noise rarely clamps.
 uint8_t contrasting_level(Pcg32& rng, int background) {
-    const int dark = std::max(0, background - 60 - 10 + 1);    // levels 10..bg-60
+    const int dark = std::max(0, background - 60 - 10 + 1);       // levels 10..bg-60
     const int bright = std::max(0, 245 - (background + 60) + 1);  // levels bg+60..245
     const int i = static_cast<int>(rng.below(static_cast<uint32_t>(dark + bright)));
     return static_cast<uint8_t>(i < dark ? 10 + i : background + 60 + (i - dark));
@@ -58,8 +58,10 @@ void paint(std::vector<double>& buf, int w, int h, const std::vector<Point2>& po
         minx = std::min(minx, p.x), maxx = std::max(maxx, p.x);
         miny = std::min(miny, p.y), maxy = std::max(maxy, p.y);
     }
-    const double x0 = std::max(0.0, std::floor(minx - 0.5)), x1 = std::min(w - 1.0, std::ceil(maxx + 0.5));
-    const double y0 = std::max(0.0, std::floor(miny - 0.5)), y1 = std::min(h - 1.0, std::ceil(maxy + 0.5));
+    const double x0 = std::max(0.0, std::floor(minx - 0.5)),
+                 x1 = std::min(w - 1.0, std::ceil(maxx + 0.5));
+    const double y0 = std::max(0.0, std::floor(miny - 0.5)),
+                 y1 = std::min(h - 1.0, std::ceil(maxy + 0.5));
     if (x0 > x1 || y0 > y1) return;
     for (int y = static_cast<int>(y0); y <= static_cast<int>(y1); ++y) {
         for (int x = static_cast<int>(x0); x <= static_cast<int>(x1); ++x) {
@@ -73,11 +75,13 @@ void paint(std::vector<double>& buf, int w, int h, const std::vector<Point2>& po
                 int n = 0;  // samples at offsets (i + 0.5) / 8 - 0.5 px
                 for (int sy = 0; sy < 8; ++sy)
                     for (int sx = 0; sx < 8; ++sx)
-                        n += inside(poly, x + (sx + 0.5) / 8 - 0.5, y + (sy + 0.5) / 8 - 0.5) ? 1 : 0;
+                        n += inside(poly, x + (sx + 0.5) / 8 - 0.5, y + (sy + 0.5) / 8 - 0.5) ? 1
+                                                                                              : 0;
                 cover = n / 64.0;
             }
             double& v = buf[static_cast<std::size_t>(y) * w + x];
-            const double here = shaded ? level + ramp_x * (x - poly[0].x) + ramp_y * (y - poly[0].y) : level;
+            const double here =
+                shaded ? level + ramp_x * (x - poly[0].x) + ramp_y * (y - poly[0].y) : level;
             if (cover > 0) v += (here - v) * cover;
         }
     }
@@ -85,7 +89,8 @@ void paint(std::vector<double>& buf, int w, int h, const std::vector<Point2>& po
 
 // Value noise: node values in [-amp, amp] on a grid of `cell` px, smoothstep-interpolated.
 void add_value_noise(std::vector<double>& buf, int w, int h, double cell, double amp, Pcg32& rng) {
-    const int gw = static_cast<int>(std::ceil(w / cell)) + 2, gh = static_cast<int>(std::ceil(h / cell)) + 2;
+    const int gw = static_cast<int>(std::ceil(w / cell)) + 2,
+              gh = static_cast<int>(std::ceil(h / cell)) + 2;
     std::vector<double> node(static_cast<std::size_t>(gw) * gh);
     for (double& n : node) n = amp * (2 * uniform01(rng) - 1);
     for (int y = 0; y < h; ++y) {
@@ -133,14 +138,16 @@ void blur(std::vector<double>& buf, int w, int h, double sigma) {
         for (int x = 0; x < w; ++x) {
             double acc = 0;
             for (int i = -r; i <= r; ++i)
-                acc += k[i + r] * buf[static_cast<std::size_t>(y) * w + std::min(w - 1, std::max(0, x + i))];
+                acc += k[i + r] *
+                       buf[static_cast<std::size_t>(y) * w + std::min(w - 1, std::max(0, x + i))];
             tmp[static_cast<std::size_t>(y) * w + x] = acc;
         }
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             double acc = 0;
             for (int i = -r; i <= r; ++i)
-                acc += k[i + r] * tmp[static_cast<std::size_t>(std::min(h - 1, std::max(0, y + i))) * w + x];
+                acc += k[i + r] *
+                       tmp[static_cast<std::size_t>(std::min(h - 1, std::max(0, y + i))) * w + x];
             buf[static_cast<std::size_t>(y) * w + x] = acc;
         }
 }
@@ -158,8 +165,10 @@ double distance(Point2 a, Point2 b) {  // px
 LineScene::LineScene(const SceneOptions& options) : options_(options) {
     if (options.width < 1 || options.height < 1 || !(options.noise_sigma >= 0) ||
         !(options.blur_sigma >= 0) || options.clutter_blobs < 0 || options.clutter_texture < 0 ||
-        !std::isfinite(options.illumination.centre_x) || !std::isfinite(options.illumination.centre_y) ||
-        !std::isfinite(options.illumination.centre_gain) || !std::isfinite(options.illumination.ramp_x) ||
+        !std::isfinite(options.illumination.centre_x) ||
+        !std::isfinite(options.illumination.centre_y) ||
+        !std::isfinite(options.illumination.centre_gain) ||
+        !std::isfinite(options.illumination.ramp_x) ||
         !std::isfinite(options.illumination.ramp_y) || !(options.illumination.falloff >= 0) ||
         !std::isfinite(options.illumination.falloff))
         throw std::invalid_argument("LineScene: bad SceneOptions");
@@ -167,10 +176,14 @@ LineScene::LineScene(const SceneOptions& options) : options_(options) {
 
 void LineScene::add_line(Point2 a, Point2 b, double width_px, uint8_t level) {
     const double len = distance(a, b);
-    if (!(len > 0) || !(width_px > 0)) throw std::invalid_argument("LineScene::add_line: empty line");
+    if (!(len > 0) || !(width_px > 0))
+        throw std::invalid_argument("LineScene::add_line: empty line");
     const double nx = -(b.y - a.y) / len * (width_px / 2), ny = (b.x - a.x) / len * (width_px / 2);
     shapes_.push_back(
-        {{{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, static_cast<double>(level), 0, 0});
+        {{{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}},
+         static_cast<double>(level),
+         0,
+         0});
     truth_.push_back({a, b});
 }
 
@@ -178,8 +191,10 @@ void LineScene::add_polygon(const std::vector<Point2>& vertices, uint8_t level) 
     add_shaded_polygon(vertices, level, 0, 0);
 }
 
-void LineScene::add_shaded_polygon(const std::vector<Point2>& vertices, double level, double ramp_x, double ramp_y) {
-    if (vertices.size() < 3) throw std::invalid_argument("LineScene::add_polygon: fewer than 3 vertices");
+void LineScene::add_shaded_polygon(const std::vector<Point2>& vertices, double level, double ramp_x,
+                                   double ramp_y) {
+    if (vertices.size() < 3)
+        throw std::invalid_argument("LineScene::add_polygon: fewer than 3 vertices");
     if (!std::isfinite(level) || !std::isfinite(ramp_x) || !std::isfinite(ramp_y))
         throw std::invalid_argument("LineScene::add_shaded_polygon: level or ramp not finite");
     shapes_.push_back({vertices, level, ramp_x, ramp_y});
@@ -195,8 +210,10 @@ void LineScene::set_background(std::vector<double> levels) {
 
 io::GreyImage LineScene::render() const {
     const int w = options_.width, h = options_.height;
-    std::vector<double> buf = background_.empty() ? std::vector<double>(static_cast<std::size_t>(w) * h, options_.background)
-                                                  : background_;
+    std::vector<double> buf =
+        background_.empty()
+            ? std::vector<double>(static_cast<std::size_t>(w) * h, options_.background)
+            : background_;
     if (options_.clutter_texture > 0) {  // two octaves, peak amplitude clutter_texture
         Pcg32 rng(options_.seed, kStreamTexture);
         add_value_noise(buf, w, h, 32, 0.7 * options_.clutter_texture, rng);
@@ -216,8 +233,8 @@ io::GreyImage LineScene::render() const {
             const double dy = y - light.centre_y;
             for (int x = 0; x < w; ++x) {
                 const double dx = x - light.centre_x;
-                const double gain =
-                    light.centre_gain + light.ramp_x * dx + light.ramp_y * dy - light.falloff * (dx * dx + dy * dy);
+                const double gain = light.centre_gain + light.ramp_x * dx + light.ramp_y * dy -
+                                    light.falloff * (dx * dx + dy * dy);
                 buf[static_cast<std::size_t>(y) * w + x] *= std::max(0.0, gain);
             }
         }
@@ -229,19 +246,24 @@ io::GreyImage LineScene::render() const {
     }
     io::GreyImage img(w, h);
     for (std::size_t i = 0; i < buf.size(); ++i)
-        img.pixels[i] = static_cast<uint8_t>(std::min(255.0, std::max(0.0, std::floor(buf[i] + 0.5))));
+        img.pixels[i] =
+            static_cast<uint8_t>(std::min(255.0, std::max(0.0, std::floor(buf[i] + 0.5))));
     return img;
 }
 
-bool uneven_illumination(int w, int h, double gain_lo, Pcg32& rng, SceneOptions::Illumination* out) {
+bool uneven_illumination(int w, int h, double gain_lo, Pcg32& rng,
+                         SceneOptions::Illumination* out) {
     // Pattern: a ramp of up to 1 per half diagonal along a random direction, minus a radial
     // falloff of 0.25–1 per half diagonal squared around a hot spot near the frame; then
     // rescaled so that its range over the pixel centres is [gain_lo, 1].
-    const double half_diag = 0.5 * std::sqrt(static_cast<double>(w) * w + static_cast<double>(h) * h);
-    const double hot_x = uniform(rng, -0.25 * w, 1.25 * w), hot_y = uniform(rng, -0.25 * h, 1.25 * h);
+    const double half_diag =
+        0.5 * std::sqrt(static_cast<double>(w) * w + static_cast<double>(h) * h);
+    const double hot_x = uniform(rng, -0.25 * w, 1.25 * w),
+                 hot_y = uniform(rng, -0.25 * h, 1.25 * h);
     double sd, cd;
     det_sincos(uniform(rng, 0, 2 * kPi), sd, cd);
-    const double ramp = uniform(rng, 0, 1) / half_diag, falloff = uniform(rng, 0.25, 1) / (half_diag * half_diag);
+    const double ramp = uniform(rng, 0, 1) / half_diag,
+                 falloff = uniform(rng, 0.25, 1) / (half_diag * half_diag);
     double lo = 1e300, hi = -1e300;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -274,7 +296,9 @@ LineScene random_polygon_scene(const SceneOptions& options, int polygons, double
     double max_sine, max_cosine;  // cos(min_corner_deg) with the library-independent sincos
     det_sincos(min_corner_deg * kPi / 180.0, max_sine, max_cosine);
     Pcg32 rng(options.seed, kStreamPolygons);
-    struct Circle { double x, y, r; };
+    struct Circle {
+        double x, y, r;
+    };
     std::vector<Circle> placed;
     for (int p = 0; p < polygons; ++p) {
         for (int attempt = 0;; ++attempt) {
@@ -295,14 +319,17 @@ LineScene random_polygon_scene(const SceneOptions& options, int polygons, double
                 ok = ok && within(v[k], w, h) && distance(v[k], v[(k + 1) % n]) >= min_side;
                 // Inner angle at v[k] from the two sides' vectors, degrees.
                 const Point2 a = v[(k + n - 1) % n], b = v[(k + 1) % n];
-                const double ux = a.x - v[k].x, uy = a.y - v[k].y, wx = b.x - v[k].x, wy = b.y - v[k].y;
-                const double cosine = (ux * wx + uy * wy) / (std::sqrt(ux * ux + uy * uy) * std::sqrt(wx * wx + wy * wy));
+                const double ux = a.x - v[k].x, uy = a.y - v[k].y, wx = b.x - v[k].x,
+                             wy = b.y - v[k].y;
+                const double cosine = (ux * wx + uy * wy) /
+                                      (std::sqrt(ux * ux + uy * uy) * std::sqrt(wx * wx + wy * wy));
                 ok = ok && cosine <= max_cosine;
             }
             // Circumcircles at least 4 px apart: no polygon hides another's sides, so every
             // truth segment is visible.
             bool overlap = false;
-            for (const Circle& c : placed) overlap = overlap || distance({cx, cy}, {c.x, c.y}) < r + c.r + 4;
+            for (const Circle& c : placed)
+                overlap = overlap || distance({cx, cy}, {c.x, c.y}) < r + c.r + 4;
             if (!ok || overlap) continue;
             scene.add_polygon(v, contrasting_level(rng, options.background));
             placed.push_back({cx, cy, r});
@@ -312,11 +339,13 @@ LineScene random_polygon_scene(const SceneOptions& options, int polygons, double
     return scene;
 }
 
-LineScene random_line_scene(const SceneOptions& options, int lines, double min_len, double max_len) {
+LineScene random_line_scene(const SceneOptions& options, int lines, double min_len,
+                            double max_len) {
     LineScene scene(options);
     const int w = options.width, h = options.height;
     const double bw = w - 1 - 2 * kMargin, bh = h - 1 - 2 * kMargin;  // px, room for end points
-    const double diagonal = std::sqrt(std::max(0.0, bw * std::fabs(bw)) + std::max(0.0, bh * std::fabs(bh)));
+    const double diagonal =
+        std::sqrt(std::max(0.0, bw * std::fabs(bw)) + std::max(0.0, bh * std::fabs(bh)));
     if (lines < 0 || !(min_len > 0) || !(min_len <= max_len) || min_len > diagonal)
         throw std::invalid_argument("random_line_scene: bad or unfitting lengths");
     Pcg32 rng(options.seed, kStreamLines);
@@ -328,8 +357,10 @@ LineScene random_line_scene(const SceneOptions& options, int lines, double min_l
             det_sincos(uniform(rng, 0, 2 * kPi), s, c);
             const double dx = len * c, dy = len * s;
             if (std::fabs(dx) > bw || std::fabs(dy) > bh) continue;
-            const double mx = uniform(rng, kMargin + std::fabs(dx) / 2, w - 1 - kMargin - std::fabs(dx) / 2);
-            const double my = uniform(rng, kMargin + std::fabs(dy) / 2, h - 1 - kMargin - std::fabs(dy) / 2);
+            const double mx =
+                uniform(rng, kMargin + std::fabs(dx) / 2, w - 1 - kMargin - std::fabs(dx) / 2);
+            const double my =
+                uniform(rng, kMargin + std::fabs(dy) / 2, h - 1 - kMargin - std::fabs(dy) / 2);
             const Point2 a{mx - dx / 2, my - dy / 2}, b{mx + dx / 2, my + dy / 2};
             const double l = distance(a, b);
             if (!within(a, w, h) || !within(b, w, h) || l < min_len || l > max_len) continue;

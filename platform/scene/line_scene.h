@@ -9,8 +9,8 @@
 
 #include <vector>
 
-#include "io/grey_image.h"
 #include "base/prng.h"
+#include "io/grey_image.h"
 
 namespace qt::scene {
 
@@ -29,11 +29,12 @@ struct SceneOptions {
     int width = 320, height = 240;  // pixels
     uint8_t background = 60;        // grey level
     double noise_sigma = 0;         // Gaussian noise, grey levels (clamped to 0..255 after adding)
-    double blur_sigma = 0;          // Gaussian blur of the rendered scene before noise, pixels (0 = none)
-    int clutter_blobs = 0;          // random filled discs/ellipses of random grey under the shapes
-    int clutter_texture = 0;        // peak amplitude of a smooth random background texture, grey levels
-    uint64_t seed = 1;              // texture, clutter and noise (and the random_* generators)
-    uint8_t clutter_blob_max = 255; // clutter blobs' grey levels are uniform in 0..clutter_blob_max
+    double blur_sigma = 0;    // Gaussian blur of the rendered scene before noise, pixels (0 = none)
+    int clutter_blobs = 0;    // random filled discs/ellipses of random grey under the shapes
+    int clutter_texture = 0;  // peak amplitude of a smooth random background texture, grey levels
+    uint64_t seed = 1;        // texture, clutter and noise (and the random_* generators)
+    uint8_t clutter_blob_max =
+        255;  // clutter blobs' grey levels are uniform in 0..clutter_blob_max
     // Smooth multiplicative illumination of the composed scene (background, texture, blobs and
     // shapes), applied before blur and noise; with d = (x − centre_x, y − centre_y) px:
     //   gain(x, y) = max(0, centre_gain + ramp_x·d.x + ramp_y·d.y − falloff·|d|²).
@@ -63,7 +64,8 @@ public:
     void add_polygon(const std::vector<Point2>& vertices, uint8_t level);
     // The same with a level that changes linearly across the frame (a shaded surface): grey
     // level + ramp_x·(x − vertices[0].x) + ramp_y·(y − vertices[0].y) at pixel (x, y).
-    void add_shaded_polygon(const std::vector<Point2>& vertices, double level, double ramp_x, double ramp_y);
+    void add_shaded_polygon(const std::vector<Point2>& vertices, double level, double ramp_x,
+                            double ramp_y);
 
     // A background of width × height grey levels (row-major; e.g. a photograph) instead of the
     // flat options().background; texture and blobs still go on top. Throws

@@ -1,17 +1,17 @@
-// A bright board composited under perspective onto a real photograph, with ground-truth
-// corners: what a camera sees when someone holds a card up in a real room. The photograph (any
-// size, grey levels) is cropped to the frame's aspect at a random place and size, resampled,
-// exposed for the board (its white, 255, becomes `darken` × the board's level: the card, lit
-// by the projector, is the brightest surface) and lit unevenly; the board (aspect 4:3, 16:9 or 1:1; grey 200–245 with mild shading
-// and sometimes faint print) is drawn over it, optionally with a dark disc or arm over part of
-// one side; then blur and noise. Or the same frame without the board. Host only (heap,
+// A bright board composited under perspective onto a real photograph, with ground-truth corners:
+// what a camera sees when someone holds a card up in a real room. The photograph (any size, grey
+// levels) is cropped to the frame's aspect at a random place and size, resampled, exposed for the
+// board (its white, 255, becomes `darken` × the board's level: the card, lit by the projector, is
+// the brightest surface) and lit unevenly; the board (aspect 4:3, 16:9 or 1:1; grey 200–245 with
+// mild shading and sometimes faint print) is drawn over it, optionally with a dark disc or arm over
+// part of one side; then blur and noise. Or the same frame without the board. Host only (heap,
 // double); randomness from qt::Pcg32 and arithmetic from det_math.h (FP contraction off), so an
 // (options, photograph, seed) triple gives the same bytes on every platform.
 #pragma once
 #include <stdint.h>
 
-#include "scene/board_pose.h"
 #include "io/grey_image.h"
+#include "scene/board_pose.h"
 #include "scene/line_scene.h"  // Point2
 
 namespace qt::scene {
@@ -25,13 +25,14 @@ struct PhotoBoardOptions {
     // a 4:3 board in a 4:3 frame, its height over the frame's.
     double scale_min = 0.25, scale_max = 0.70;
     int board_level_min = 200, board_level_max = 245;  // board grey before lighting, <= 255
-    double shading_max = 0.10;      // largest level change across the board, fraction of its level
-    double print_share = 0.5;       // share of boards with faint print (2–5 lines of "text")
-    double darken_min = 0.5, darken_max = 0.9;  // the photograph's white over the board's level, (0, 1]
-    double light_gain_min = 0.6;    // darkest illumination gain over the frame (brightest 1), (0, 1]
-    double blur_sigma_max = 1.25;   // Gaussian blur σ in [0, max] px (a 5-px kernel spans ±2σ)
+    double shading_max = 0.10;  // largest level change across the board, fraction of its level
+    double print_share = 0.5;   // share of boards with faint print (2–5 lines of "text")
+    double darken_min = 0.5,
+           darken_max = 0.9;       // the photograph's white over the board's level, (0, 1]
+    double light_gain_min = 0.6;   // darkest illumination gain over the frame (brightest 1), (0, 1]
+    double blur_sigma_max = 1.25;  // Gaussian blur σ in [0, max] px (a 5-px kernel spans ±2σ)
     double noise_sigma_min = 2, noise_sigma_max = 7;  // Gaussian noise, grey levels
-    bool board = true;              // false: the same frame without the board
+    bool board = true;                                // false: the same frame without the board
     // A dark disc or arm (half of the frames each) over 15–70 % of one side >= 30 px long, with
     // at least max(6 px, 10 % of the side) of it visible at each end; no corner is covered.
     bool occlude = false;
@@ -54,13 +55,14 @@ struct PhotoBoardScene {
     int occluded_side = -1;
     double occluded_from = 0, occluded_to = 0;
     bool occluder_is_disc = false;
-    bool printed = false;         // the board carries faint print
-    int board_level = 0;          // before shading and lighting
+    bool printed = false;  // the board carries faint print
+    int board_level = 0;   // before shading and lighting
     double darken = 1, light_gain_min = 1, blur_sigma = 0, noise_sigma = 0;
 };
 
 // Throws std::invalid_argument on options out of range or an empty photograph.
-PhotoBoardScene make_photo_board_scene(const PhotoBoardOptions& options, const io::GreyImage& photo, uint64_t seed);
+PhotoBoardScene make_photo_board_scene(const PhotoBoardOptions& options, const io::GreyImage& photo,
+                                       uint64_t seed);
 
 // A sequence in front of one photograph: a 4:3 board tilted 20° moves along an ellipse
 // (±18 % of the width, ±12 % of the height around the centre; one turn in `frames` frames),
@@ -76,11 +78,13 @@ struct PhotoSequenceOptions {
 };
 
 // Frame `index` (0 <= index < frames) of the sequence.
-PhotoBoardScene make_photo_sequence_frame(const PhotoSequenceOptions& options, const io::GreyImage& photo, int index);
+PhotoBoardScene make_photo_sequence_frame(const PhotoSequenceOptions& options,
+                                          const io::GreyImage& photo, int index);
 
 // The photograph cropped to a w:h window (at least `min_share` of the largest such window, at
 // a random place) and resampled to w × h grey levels, row-major (box filter of the output
 // pixel's footprint, at least one input pixel wide, so it also interpolates when enlarging).
-std::vector<double> photo_background(const io::GreyImage& photo, int w, int h, double min_share, Pcg32& rng);
+std::vector<double> photo_background(const io::GreyImage& photo, int w, int h, double min_share,
+                                     Pcg32& rng);
 
 }  // namespace qt::scene

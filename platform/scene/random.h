@@ -3,8 +3,8 @@
 #pragma once
 #include <cmath>
 
-#include "scene/det_math.h"
 #include "base/prng.h"
+#include "scene/det_math.h"
 
 namespace qt::scene {
 

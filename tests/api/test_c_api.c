@@ -9,11 +9,11 @@
  *   top-right (239.5, 59.5)
  * which is also detect's order: anti-clockwise as seen, corner 0 with the smallest x + y.
  * Why the detector lands on the step and not on a pixel centre (gradient_word.h,
- * core/lines/edge_stage.h): on a row through the rectangle gx = p(x+1) - p(x-1) is 160 at x = 79 and
- * at x = 80 and 0 elsewhere, a plateau two pixels wide. NMS keeps a pixel whose magnitude m is
- * greater than the neighbour ahead (along +gradient) and not less than the one behind: x = 79
- * fails (160 > 160 is false), x = 80 passes (160 > 0, 160 >= 160). Its sub-pixel offset is the
- * vertex of the parabola through (behind, m, ahead) = (160, 160, 0) at -1, 0, +1:
+ * core/lines/edge_stage.h): on a row through the rectangle gx = p(x+1) - p(x-1) is 160 at
+ * x = 79 and at x = 80 and 0 elsewhere, a plateau two pixels wide. NMS keeps a pixel whose
+ * magnitude m is greater than the neighbour ahead (along +gradient) and not less than the one
+ * behind: x = 79 fails (160 > 160 is false), x = 80 passes (160 > 0, 160 >= 160). Its sub-pixel
+ * offset is the vertex of the parabola through (behind, m, ahead) = (160, 160, 0) at -1, 0, +1:
  * (behind - ahead) / (2 (behind - 2m + ahead)) = 160 / (2 * -160) = -1/2 step, so the edge
  * point sits at 80 - 0.5 = 79.5. The right side is the mirror image (gx = -160 at 239 and 240,
  * the gradient points to -x, x = 239 is kept, offset +1/2 towards +x): 239.5. Rows likewise:
@@ -37,7 +37,7 @@
 #define H 240
 #define BACKGROUND 40
 #define BOARD 200
-#define ONE_PX 65536  /* q16.16 */
+#define ONE_PX 65536 /* q16.16 */
 
 static unsigned failures;
 
@@ -68,7 +68,8 @@ static uint8_t image[H][W];
 static void render(rect r) {
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x)
-            image[y][x] = (x >= r.left && x <= r.right && y >= r.top && y <= r.bottom) ? BOARD : BACKGROUND;
+            image[y][x] =
+                (x >= r.left && x <= r.right && y >= r.top && y <= r.bottom) ? BOARD : BACKGROUND;
 }
 
 /* The rectangle's true corners in detect's order, q16.16: its outline lies half a pixel
@@ -77,10 +78,14 @@ static void truth(rect r, qt_point c[4]) {
     const int32_t half = ONE_PX / 2;
     const int32_t l = (2 * r.left - 1) * half, ri = (2 * r.right + 1) * half;
     const int32_t t = (2 * r.top - 1) * half, b = (2 * r.bottom + 1) * half;
-    c[0].x = l;  c[0].y = t;
-    c[1].x = l;  c[1].y = b;
-    c[2].x = ri; c[2].y = b;
-    c[3].x = ri; c[3].y = t;
+    c[0].x = l;
+    c[0].y = t;
+    c[1].x = l;
+    c[1].y = b;
+    c[2].x = ri;
+    c[2].y = b;
+    c[3].x = ri;
+    c[3].y = t;
 }
 
 static int64_t distance2(qt_point a, qt_point b) {
@@ -89,7 +94,8 @@ static int64_t distance2(qt_point a, qt_point b) {
 }
 
 /* Every corner within 1 px of the truth, in the same order; prints both on failure. */
-static void check_corners(const qt_point got[4], const qt_point want[4], const char* what, int line) {
+static void check_corners(const qt_point got[4], const qt_point want[4], const char* what,
+                          int line) {
     int ok = 1;
     for (int i = 0; i < 4; ++i) ok = ok && distance2(got[i], want[i]) <= (int64_t)ONE_PX * ONE_PX;
     if (ok) return;
@@ -187,7 +193,8 @@ static void test_gradient_path(const qt_config* cfg) {
         const int up = y > 0 ? y - 1 : 0, down = y < H - 1 ? y + 1 : H - 1;
         for (int x = 0; x < W; ++x) {
             const int left = x > 0 ? x - 1 : 0, right = x < W - 1 ? x + 1 : W - 1;
-            words[x] = word_of(image[y][right] - image[y][left], image[down][x] - image[up][x], &ok);
+            words[x] =
+                word_of(image[y][right] - image[y][left], image[down][x] - image[up][x], &ok);
         }
         CHECK_STATUS(qt_push_gradient_row(&det, words, W), QT_OK);
     }
@@ -305,21 +312,21 @@ static void test_config(void) {
     qt_config_default(NULL, W, H); /* no crash */
     CHECK_STATUS(qt_config_check(NULL), QT_NULL_POINTER);
 
-#define RANGE(field, lo, hi)                                     \
-    do {                                                         \
-        bad = cfg;                                               \
-        bad.field = (lo);                                        \
-        CHECK_STATUS(qt_config_check(&bad), QT_OK);              \
-        bad.field = (hi);                                        \
-        CHECK_STATUS(qt_config_check(&bad), QT_OK);              \
-        bad.field = (hi) + 1;                                    \
-        CHECK_STATUS(qt_config_check(&bad), QT_BAD_CONFIG);      \
+#define RANGE(field, lo, hi)                                \
+    do {                                                    \
+        bad = cfg;                                          \
+        bad.field = (lo);                                   \
+        CHECK_STATUS(qt_config_check(&bad), QT_OK);         \
+        bad.field = (hi);                                   \
+        CHECK_STATUS(qt_config_check(&bad), QT_OK);         \
+        bad.field = (hi) + 1;                               \
+        CHECK_STATUS(qt_config_check(&bad), QT_BAD_CONFIG); \
     } while (0)
-#define BELOW(field, lo)                                         \
-    do {                                                         \
-        bad = cfg;                                               \
-        bad.field = (lo) - 1;                                    \
-        CHECK_STATUS(qt_config_check(&bad), QT_BAD_CONFIG);      \
+#define BELOW(field, lo)                                    \
+    do {                                                    \
+        bad = cfg;                                          \
+        bad.field = (lo)-1;                                 \
+        CHECK_STATUS(qt_config_check(&bad), QT_BAD_CONFIG); \
     } while (0)
     RANGE(edge_threshold, 1, 510);
     BELOW(edge_threshold, 1);
@@ -378,11 +385,11 @@ static void test_errors(const qt_config* cfg) {
     CHECK_STATUS(qt_begin_frame(&det, 0, H), QT_BAD_SIZE);
     CHECK_STATUS(qt_begin_frame(&det, W, 0), QT_BAD_SIZE);
     CHECK_STATUS(qt_begin_frame(&det, 640, 480), QT_BAD_SIZE);
-    CHECK_STATUS(qt_push_row(&det, row, W), QT_NOT_IN_FRAME);  /* no frame after a refusal */
+    CHECK_STATUS(qt_push_row(&det, row, W), QT_NOT_IN_FRAME); /* no frame after a refusal */
     CHECK_STATUS(qt_finish(&det), QT_NOT_IN_FRAME);
     CHECK_STATUS(qt_track(&trk, &det, &t), QT_NOT_IN_FRAME);
     CHECK(t.state == QT_TRACK_NONE);
-    CHECK_STATUS(qt_begin_frame(&det, 1, 1), QT_OK);  /* smallest */
+    CHECK_STATUS(qt_begin_frame(&det, 1, 1), QT_OK); /* smallest */
     CHECK_STATUS(qt_push_row(&det, row, 1), QT_OK);
     CHECK_STATUS(qt_finish(&det), QT_OK);
     CHECK(qt_line_count(&det) == 0 && qt_quad_count(&det) == 0);
@@ -408,11 +415,11 @@ static void test_errors(const qt_config* cfg) {
     CHECK_STATUS(qt_get_quad(&det, 0, &q), QT_BAD_INDEX);
     CHECK_STATUS(qt_track(&trk, &det, &t), QT_NOT_IN_FRAME);
     for (int y = 100; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
-    CHECK_STATUS(qt_push_row(&det, image[0], W), QT_NOT_IN_FRAME);  /* one row too many */
+    CHECK_STATUS(qt_push_row(&det, image[0], W), QT_NOT_IN_FRAME); /* one row too many */
     CHECK_STATUS(qt_finish(&det), QT_OK);
     CHECK(qt_quad_count(&det) == 1);
-    CHECK_STATUS(qt_finish(&det), QT_NOT_IN_FRAME);  /* finished already */
-    CHECK(qt_quad_count(&det) == 1);                 /* results kept */
+    CHECK_STATUS(qt_finish(&det), QT_NOT_IN_FRAME); /* finished already */
+    CHECK(qt_quad_count(&det) == 1);                /* results kept */
 
     /* A new frame abandoning an incomplete one. */
     CHECK_STATUS(qt_begin_frame(&det, W, H), QT_OK);
@@ -460,9 +467,15 @@ static void test_errors(const qt_config* cfg) {
 
 /* Status numbers (status.h's order) and names. */
 static void test_names(void) {
-    static const qt_status all[] = {QT_OK, QT_BAD_SIZE, QT_BAD_ROW_LENGTH, QT_NOT_IN_FRAME,
-                                    QT_PREVIOUS_FRAME_INCOMPLETE, QT_CAPACITY_EXCEEDED,
-                                    QT_NULL_POINTER, QT_BAD_INDEX, QT_BAD_CONFIG};
+    static const qt_status all[] = {QT_OK,
+                                    QT_BAD_SIZE,
+                                    QT_BAD_ROW_LENGTH,
+                                    QT_NOT_IN_FRAME,
+                                    QT_PREVIOUS_FRAME_INCOMPLETE,
+                                    QT_CAPACITY_EXCEEDED,
+                                    QT_NULL_POINTER,
+                                    QT_BAD_INDEX,
+                                    QT_BAD_CONFIG};
     const size_t n = sizeof all / sizeof all[0];
     CHECK(QT_OK == 0 && QT_BAD_SIZE == 1 && QT_BAD_ROW_LENGTH == 2 && QT_NOT_IN_FRAME == 3 &&
           QT_PREVIOUS_FRAME_INCOMPLETE == 4 && QT_CAPACITY_EXCEEDED == 5);

@@ -79,7 +79,8 @@ TEST_CASE("degree conversions", "[angle]") {
     for (int i = 0; i < 100000; ++i) {
         const q16_16 deg = q16_16::from_raw(static_cast<int32_t>(rng.next()));
         const double want = deg.raw / 65536.0;
-        REQUIRE(std::fabs(angle_error_deg(angle_from_deg(deg), want)) <= 0.5 / kUnitsPerDegree + 1e-12);
+        REQUIRE(std::fabs(angle_error_deg(angle_from_deg(deg), want)) <=
+                0.5 / kUnitsPerDegree + 1e-12);
         const angle_t a = rng.next();
         const double a_deg = a / kUnitsPerDegree;
         const double signed_deg = a_deg >= 180.0 ? a_deg - 360.0 : a_deg;

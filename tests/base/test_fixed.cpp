@@ -13,7 +13,9 @@ namespace {
 // Round half away from zero, then clamp to [lo, hi]: the reference of every narrowing here.
 int64_t ref_round_clamp(double v, int64_t lo, int64_t hi) {
     const double r = std::round(v);  // std::round rounds halves away from zero
-    return r < static_cast<double>(lo) ? lo : r > static_cast<double>(hi) ? hi : static_cast<int64_t>(r);
+    return r < static_cast<double>(lo)   ? lo
+           : r > static_cast<double>(hi) ? hi
+                                         : static_cast<int64_t>(r);
 }
 }  // namespace
 
@@ -34,8 +36,9 @@ TEST_CASE("div_round_half_away for every sign combination", "[fixed]") {
     for (int64_t n = -300; n <= 300; ++n)
         for (int64_t d = -17; d <= 17; ++d) {
             if (d == 0) continue;
-            REQUIRE(div_round_half_away(n, d) ==
-                    static_cast<int64_t>(std::round(static_cast<double>(n) / static_cast<double>(d))));
+            REQUIRE(
+                div_round_half_away(n, d) ==
+                static_cast<int64_t>(std::round(static_cast<double>(n) / static_cast<double>(d))));
         }
 }
 
@@ -91,8 +94,8 @@ TEST_CASE("mul and div against double", "[fixed]") {
             const double q = ra / rb * 65536.0;
             const int64_t got = div<q16_16>(a, b).raw;
             // The quotient is exact in integers; double may be off by one ulp near .5 ties.
-            REQUIRE(std::fabs(static_cast<double>(got) -
-                              static_cast<double>(ref_round_clamp(q, INT32_MIN, INT32_MAX))) <= 1.0);
+            REQUIRE(std::fabs(static_cast<double>(got) - static_cast<double>(ref_round_clamp(
+                                                             q, INT32_MIN, INT32_MAX))) <= 1.0);
         }
     }
     REQUIRE(div<q16_16>(q16_16::from_int(1), q16_16::from_raw(0)).raw == INT32_MAX);
@@ -105,7 +108,8 @@ TEST_CASE("add_sat, sub_sat and neg_sat saturate instead of overflowing", "[fixe
     REQUIRE(add_sat(big, q16_16::from_int(1)).raw == INT32_MAX);
     REQUIRE(sub_sat(small, q16_16::from_int(1)).raw == INT32_MIN);
     REQUIRE(neg_sat(q16_16::from_raw(INT32_MIN)).raw == INT32_MAX);
-    REQUIRE(add_sat(q16_16::from_ratio(3, 2), q16_16::from_ratio(1, 4)) == q16_16::from_ratio(7, 4));
+    REQUIRE(add_sat(q16_16::from_ratio(3, 2), q16_16::from_ratio(1, 4)) ==
+            q16_16::from_ratio(7, 4));
     REQUIRE(q16_16::from_ratio(-5, 2).round_int() == -3);
     REQUIRE(q16_16::from_ratio(-5, 2).floor_int() == -3);
     REQUIRE(q16_16::from_ratio(-9, 4).round_int() == -2);
@@ -114,11 +118,16 @@ TEST_CASE("add_sat, sub_sat and neg_sat saturate instead of overflowing", "[fixe
 TEST_CASE("wide 64x64 products round half away and saturate, against __int128", "[fixed]") {
     Pcg32 rng(7);
     for (int i = 0; i < 200000; ++i) {
-        const int bits_a = static_cast<int>(rng.below(64)), bits_b = static_cast<int>(rng.below(64));
-        const int64_t a = static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (63 - bits_a)) *
-                          (rng.below(2) ? 1 : -1);
-        const int64_t b = static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (63 - bits_b)) *
-                          (rng.below(2) ? 1 : -1);
+        const int bits_a = static_cast<int>(rng.below(64)),
+                  bits_b = static_cast<int>(rng.below(64));
+        const int64_t a =
+            static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >>
+                                 (63 - bits_a)) *
+            (rng.below(2) ? 1 : -1);
+        const int64_t b =
+            static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >>
+                                 (63 - bits_b)) *
+            (rng.below(2) ? 1 : -1);
         const int n = static_cast<int>(rng.below(127));
         const __int128 p = static_cast<__int128>(a) * b;
         const __int128 mag = p < 0 ? -p : p;

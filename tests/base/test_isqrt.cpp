@@ -32,7 +32,8 @@ TEST_CASE("isqrt32 is floor(sqrt) for every n below 2^24 and at random above", "
 TEST_CASE("isqrt64 and isqrt64_round", "[isqrt]") {
     Pcg32 rng(4);
     for (int i = 0; i < 1000000; ++i) {
-        const uint64_t n = (static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (rng.next() % 64);
+        const uint64_t n =
+            (static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (rng.next() % 64);
         const uint32_t r = isqrt64(n);
         REQUIRE(is_floor_sqrt(n, r));
         // Nearest: |rr² - n| is smallest for rr = isqrt64_round(n) among r and r + 1.

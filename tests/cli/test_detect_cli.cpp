@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/board_scene.h"
 #include "cli/detect_command.h"
 #include "io/image_io.h"
+#include "scene/board_scene.h"
 #include "support/cli_run.h"
 #include "support/json_reader.h"
 #include "support/temp_dir.h"
@@ -22,7 +22,9 @@ namespace {
 
 using Run = qt::test::CliRun;
 
-Run detect(const std::vector<std::string>& args) { return qt::test::run_cli(qt::cli::run_detect, args); }
+Run detect(const std::vector<std::string>& args) {
+    return qt::test::run_cli(qt::cli::run_detect, args);
+}
 
 // This process's own directory (each test case runs as its own process under ctest -j).
 std::filesystem::path temp_dir() {
@@ -42,7 +44,8 @@ std::string write_file(const std::string& name, const std::string& bytes) {
 std::string board_pgm() {
     const std::string path = (temp_dir() / "board.pgm").string();
     std::string error;
-    REQUIRE(qt::io::write_pgm(path, qt::scene::render_board(qt::scene::default_board_scene()), error));
+    REQUIRE(
+        qt::io::write_pgm(path, qt::scene::render_board(qt::scene::default_board_scene()), error));
     return path;
 }
 
@@ -74,14 +77,17 @@ TEST_CASE("detect prints JSON with the board's corners anti-clockwise as seen", 
     CHECK(j["status"].str == "ok");
     REQUIRE(j["lines"].items.size() >= 4);
     for (const Json& l : j["lines"].items) {
-        for (const char* k : {"x1", "y1", "x2", "y2", "rho", "theta_deg"}) REQUIRE(l[k].type == Json::Type::number);
+        for (const char* k : {"x1", "y1", "x2", "y2", "rho", "theta_deg"})
+            REQUIRE(l[k].type == Json::Type::number);
         CHECK(l["rho"].num >= 0);
         CHECK(l["theta_deg"].num >= 0);
         CHECK(l["theta_deg"].num < 360);
         // rho and theta describe the line through the end points.
         const double t = l["theta_deg"].num * 3.14159265358979323846 / 180;
-        CHECK(std::fabs(l["x1"].num * std::cos(t) + l["y1"].num * std::sin(t) - l["rho"].num) < 0.01);
-        CHECK(std::fabs(l["x2"].num * std::cos(t) + l["y2"].num * std::sin(t) - l["rho"].num) < 0.01);
+        CHECK(std::fabs(l["x1"].num * std::cos(t) + l["y1"].num * std::sin(t) - l["rho"].num) <
+              0.01);
+        CHECK(std::fabs(l["x2"].num * std::cos(t) + l["y2"].num * std::sin(t) - l["rho"].num) <
+              0.01);
     }
     REQUIRE(j["quads"].items.size() >= 1);
     const Json& q = j["quads"][0];
@@ -102,7 +108,8 @@ TEST_CASE("detect prints JSON with the board's corners anti-clockwise as seen", 
     const double uv[4][2] = {{0, 0}, {0, 768}, {1024, 768}, {1024, 0}};
     for (int i = 0; i < 4; ++i) {
         double p[3];
-        for (size_t r2 = 0; r2 < 3; ++r2) p[r2] = h[r2][0].num * uv[i][0] + h[r2][1].num * uv[i][1] + h[r2][2].num;
+        for (size_t r2 = 0; r2 < 3; ++r2)
+            p[r2] = h[r2][0].num * uv[i][0] + h[r2][1].num * uv[i][1] + h[r2][2].num;
         const Json& c = q["corners"][static_cast<size_t>(i)];
         CHECK(std::hypot(p[0] / p[2] - c[0].num, p[1] / p[2] - c[1].num) < 0.02);
     }
@@ -120,8 +127,9 @@ TEST_CASE("detect takes options with the papers' names, in both spellings", "[cl
     CHECK(JsonReader::parse(strict.out)["lines"].items.empty());
     const Run help = detect({"--help"});
     CHECK(help.status == 0);
-    for (const char* name : {"--threshold", "--min-line-length", "--max-gap", "--parallel-tolerance",
-                             "--perpendicular-tolerance", "--min-side", "--max-side", "--display"})
+    for (const char* name :
+         {"--threshold", "--min-line-length", "--max-gap", "--parallel-tolerance",
+          "--perpendicular-tolerance", "--min-side", "--max-side", "--display"})
         CHECK(help.out.find(name) != std::string::npos);
 }
 
@@ -136,13 +144,16 @@ TEST_CASE("detect: every error is one line on stderr and a non-zero exit", "[cli
     require_error({img, "--min-side=1e9"}, 2, "out of range");
     require_error({img, "--display", "640"}, 2, "is not WxH");
     require_error({img, "--rho", "3"}, 2, "3 is not 2 or 4");
-    require_error({img, "--min-side", "200", "--max-side", "100"}, 2, "--min-side is above --max-side");
+    require_error({img, "--min-side", "200", "--max-side", "100"}, 2,
+                  "--min-side is above --max-side");
     const std::string missing = (temp_dir() / "no_such_file.pgm").string();
     require_error({missing}, 1, "cannot open");
     require_error({write_file("truncated_header.pgm", "P5\n64 ")}, 1, "truncated_header.pgm");
     require_error({write_file("malformed.pgm", "P5\n64 x48\n255\n")}, 1, "malformed.pgm");
-    require_error({write_file("maxval.pgm", "P5\n2 2\n65535\n" + std::string(8, '\0'))}, 1, "unsupported maxval 65535");
-    require_error({write_file("raster.pgm", "P5\n4 4\n255\n" + std::string(5, 'a'))}, 1, "truncated");
+    require_error({write_file("maxval.pgm", "P5\n2 2\n65535\n" + std::string(8, '\0'))}, 1,
+                  "unsupported maxval 65535");
+    require_error({write_file("raster.pgm", "P5\n4 4\n255\n" + std::string(5, 'a'))}, 1,
+                  "truncated");
     require_error({write_file("notimage.txt", "hello world\n")}, 1, "not a PGM");
     require_error({write_file("big.pgm", "P5\n641 480\n255\n" + std::string(641 * 480, '\0'))}, 1,
                   "641 x 480 is over this build's capacity of 640 x 480");

@@ -12,13 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "support/cli_run.h"
-#include "scene/ground_sequence.h"
 #include "cli/homography_command.h"
-#include "io/image_io.h"
-#include "support/json_reader.h"
 #include "cli/target_command.h"
 #include "demo/target_runner.h"
+#include "io/image_io.h"
+#include "scene/ground_sequence.h"
+#include "support/cli_run.h"
+#include "support/json_reader.h"
 #include "support/temp_dir.h"
 
 using qt::test::Json;
@@ -29,7 +29,9 @@ namespace {
 qt::test::CliRun homography(const std::vector<std::string>& args) {
     return qt::test::run_cli(qt::cli::run_homography, args);
 }
-qt::test::CliRun target(const std::vector<std::string>& args) { return qt::test::run_cli(qt::cli::run_target, args); }
+qt::test::CliRun target(const std::vector<std::string>& args) {
+    return qt::test::run_cli(qt::cli::run_target, args);
+}
 
 const qt::test::TempDir& temp() {
     static const qt::test::TempDir dir;
@@ -77,7 +79,9 @@ TEST_CASE("quadtrack homography: two frames of the airborne sequence give the gr
                 v = (m(1, 0) * x + m(1, 1) * y + m(1, 2)) / w;
             };
             double u, v, tu, tv;
-            map([&](int i, int k) { return j["H"][static_cast<size_t>(i)][static_cast<size_t>(k)].num; }, u, v);
+            map([&](int i,
+                    int k) { return j["H"][static_cast<size_t>(i)][static_cast<size_t>(k)].num; },
+                u, v);
             map([&](int i, int k) { return t[3 * i + k]; }, tu, tv);
             worst = std::max(worst, std::hypot(u - tu, v - tv));
         }
@@ -105,7 +109,8 @@ TEST_CASE("quadtrack homography: errors and a pair with nothing to match", "[tar
     CHECK(help.out.find("--inlier-px PX") != std::string::npos);
 }
 
-TEST_CASE("quadtrack target: the sequence's target tracked through the flare and out of view", "[target][cli]") {
+TEST_CASE("quadtrack target: the sequence's target tracked through the flare and out of view",
+          "[target][cli]") {
     const qt::scene::GroundSequenceConfig cfg = qt::scene::short_ground_sequence();
     const qt::scene::GroundSequence seq(cfg);
     for (int k = 0; k < seq.frames(); ++k) {
@@ -114,8 +119,8 @@ TEST_CASE("quadtrack target: the sequence's target tracked through the flare and
         write(name, seq.render(k));
     }
     const qt::cli::TargetBox box = qt::cli::start_box(seq.truth(0));
-    const std::string roi = std::to_string(box.x) + "," + std::to_string(box.y) + "," + std::to_string(box.side) +
-                            "," + std::to_string(box.side);
+    const std::string roi = std::to_string(box.x) + "," + std::to_string(box.y) + "," +
+                            std::to_string(box.side) + "," + std::to_string(box.side);
     const auto r = target({temp().path("t%03d.pgm"), "--roi", roi});
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());

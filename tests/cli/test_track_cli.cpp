@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "cli/detect_command.h"
+#include "cli/track_command.h"
+#include "io/image_io.h"
 #include "scene/board_scene.h"
 #include "scene/board_sequence.h"
-#include "cli/detect_command.h"
-#include "io/image_io.h"
 #include "support/cli_run.h"
 #include "support/json_reader.h"
 #include "support/temp_dir.h"
-#include "cli/track_command.h"
 
 using qt::test::Json;
 using qt::test::JsonReader;
@@ -30,7 +30,9 @@ constexpr int kFrames = 10, kFirstHidden = 4, kLastHidden = 6;
 
 using Run = qt::test::CliRun;
 
-Run track(const std::vector<std::string>& args) { return qt::test::run_cli(qt::cli::run_track, args); }
+Run track(const std::vector<std::string>& args) {
+    return qt::test::run_cli(qt::cli::run_track, args);
+}
 
 std::vector<Json> json_lines(const std::string& text) {
     std::vector<Json> lines;
@@ -58,11 +60,12 @@ void write(const std::filesystem::path& path, const qt::io::GreyImage& img) {
 // Frame f: the default board turned by (f − 5)·0.5° about its centre and moved by
 // (5f − 22, 2f − 9) px; in frames kFirstHidden..kLastHidden the demo's bars hide the top and
 // bottom sides. truth[f] gets the corners (px) in the generator's order TL, TR, BR, BL.
-std::string write_sequence(const std::filesystem::path& dir, std::vector<std::array<double, 8>>& truth) {
+std::string write_sequence(const std::filesystem::path& dir,
+                           std::vector<std::array<double, 8>>& truth) {
     truth.clear();
     for (int f = 0; f < kFrames; ++f) {
-        qt::scene::BoardScene s =
-            qt::scene::turned_board(qt::scene::default_board_scene(), (f - 5) * 0.5, 5.0 * f - 22, 2.0 * f - 9);
+        qt::scene::BoardScene s = qt::scene::turned_board(qt::scene::default_board_scene(),
+                                                          (f - 5) * 0.5, 5.0 * f - 22, 2.0 * f - 9);
         std::array<double, 8> t{};
         for (int i = 0; i < 4; ++i) {
             t[2 * i] = s.corners[i].x / 256.0;
@@ -84,7 +87,8 @@ std::string write_sequence(const std::filesystem::path& dir, std::vector<std::ar
 
 // One error: the status, exactly one line on stderr starting "quadtrack track: " and containing
 // `fragment`; `json_lines` lines on stdout before it.
-void require_error(const std::vector<std::string>& args, int status, const std::string& fragment, size_t json_count = 0) {
+void require_error(const std::vector<std::string>& args, int status, const std::string& fragment,
+                   size_t json_count = 0) {
     const Run r = track(args);
     INFO("stderr: " << r.err);
     CHECK(r.status == status);
@@ -98,13 +102,15 @@ void require_error(const std::vector<std::string>& args, int status, const std::
 
 }  // namespace
 
-TEST_CASE("track carries the board through frames where its top and bottom sides are hidden", "[cli][track]") {
+TEST_CASE("track carries the board through frames where its top and bottom sides are hidden",
+          "[cli][track]") {
     std::vector<std::array<double, 8>> truth;
     const std::string pattern = write_sequence(temp_dir("sequence"), truth);
     // Corner i of the JSON (anti-clockwise: TL, BL, BR, TR) is the generator's corner truth_of[i].
     const int truth_of[4] = {0, 3, 2, 1};
-    for (const std::vector<std::string>& model : {std::vector<std::string>{}, std::vector<std::string>{"--model", "turn"},
-                                                  std::vector<std::string>{"--model=paper", "--filters", "2"}}) {
+    for (const std::vector<std::string>& model :
+         {std::vector<std::string>{}, std::vector<std::string>{"--model", "turn"},
+          std::vector<std::string>{"--model=paper", "--filters", "2"}}) {
         std::vector<std::string> args = {pattern};
         args.insert(args.end(), model.begin(), model.end());
         const Run r = track(args);
@@ -141,7 +147,8 @@ TEST_CASE("track carries the board through frames where its top and bottom sides
                 const int k = truth_of[i];
                 const double e = std::hypot(c[0].num - truth[static_cast<size_t>(f)][2 * k],
                                             c[1].num - truth[static_cast<size_t>(f)][2 * k + 1]);
-                INFO("corner " << i << " (" << c[0].num << ", " << c[1].num << "): " << e << " px from the truth");
+                INFO("corner " << i << " (" << c[0].num << ", " << c[1].num << "): " << e
+                               << " px from the truth");
                 CHECK(e < 2.0);
             }
             // The display homography takes the display's corners (1024 × 768) onto the quad's.
@@ -150,8 +157,10 @@ TEST_CASE("track carries the board through frames where its top and bottom sides
             const double uv[4][2] = {{0, 0}, {0, 768}, {1024, 768}, {1024, 0}};
             for (size_t i = 0; i < 4; ++i) {
                 double p[3];
-                for (size_t r2 = 0; r2 < 3; ++r2) p[r2] = h[r2][0].num * uv[i][0] + h[r2][1].num * uv[i][1] + h[r2][2].num;
-                CHECK(std::hypot(p[0] / p[2] - q["corners"][i][0].num, p[1] / p[2] - q["corners"][i][1].num) < 0.02);
+                for (size_t r2 = 0; r2 < 3; ++r2)
+                    p[r2] = h[r2][0].num * uv[i][0] + h[r2][1].num * uv[i][1] + h[r2][2].num;
+                CHECK(std::hypot(p[0] / p[2] - q["corners"][i][0].num,
+                                 p[1] / p[2] - q["corners"][i][1].num) < 0.02);
             }
         }
     }
@@ -174,12 +183,14 @@ TEST_CASE("track prints detect's lines for each frame", "[cli][track]") {
     const Json& b = detect["lines"];
     REQUIRE(a.items.size() == b.items.size());
     for (size_t i = 0; i < a.items.size(); ++i)
-        for (const char* k : {"x1", "y1", "x2", "y2", "rho", "theta_deg"}) CHECK(a[i][k].num == b[i][k].num);
+        for (const char* k : {"x1", "y1", "x2", "y2", "rho", "theta_deg"})
+            CHECK(a[i][k].num == b[i][k].num);
 }
 
 TEST_CASE("track: frames without a board report no quad", "[cli][track]") {
     const auto dir = temp_dir("blank");
-    for (int f = 0; f < 2; ++f) write(dir / ("b" + std::to_string(f) + ".pgm"), qt::io::GreyImage(64, 48, 90));
+    for (int f = 0; f < 2; ++f)
+        write(dir / ("b" + std::to_string(f) + ".pgm"), qt::io::GreyImage(64, 48, 90));
     const Run r = track({(dir / "b%d.pgm").string()});
     REQUIRE(r.status == 0);
     const std::vector<Json> frames = json_lines(r.out);
@@ -196,8 +207,8 @@ TEST_CASE("track: frames without a board report no quad", "[cli][track]") {
 TEST_CASE("track --help lists the tracker's options; detect does not take them", "[cli][track]") {
     const Run help = track({"--help"});
     CHECK(help.status == 0);
-    for (const char* name : {"--model paper|turn", "--filters", "--gate-angle", "--gate-distance", "--max-predicted",
-                             "--threshold", "--min-line-length", "--display"})
+    for (const char* name : {"--model paper|turn", "--filters", "--gate-angle", "--gate-distance",
+                             "--max-predicted", "--threshold", "--min-line-length", "--display"})
         CHECK(help.out.find(name) != std::string::npos);
     CHECK(help.out.find("(default paper)") != std::string::npos);
     CHECK(help.out.find("(default 3)") != std::string::npos);
@@ -229,7 +240,8 @@ TEST_CASE("track: every error is one line on stderr and a non-zero exit", "[cli]
     write(sized / "s0.pgm", qt::io::GreyImage(64, 48, 90));
     write(sized / "s1.pgm", qt::io::GreyImage(64, 48, 90));
     write(sized / "s2.pgm", qt::io::GreyImage(80, 48, 90));
-    require_error({(sized / "s%d.pgm").string()}, 1, "frame 2 is 80 x 48, the sequence started at 64 x 48", 2);
+    require_error({(sized / "s%d.pgm").string()}, 1,
+                  "frame 2 is 80 x 48, the sequence started at 64 x 48", 2);
 
     // A frame that cannot be read in the middle: the same.
     const auto broken = temp_dir("broken");

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "cli/cli_options.h"
-#include "fuzz_check.h"
 #include "cli/target_options.h"
+#include "fuzz_check.h"
 
 namespace {
 
@@ -45,7 +45,9 @@ bool q16_in(qt::q16_16 v, int lo, int hi) {
     return v.raw >= static_cast<int64_t>(lo) * 65536 && v.raw <= static_cast<int64_t>(hi) * 65536;
 }
 
-bool deg_at_most(qt::angle_t a, int deg) { return a <= qt::angle_from_deg(qt::q16_16::from_int(deg)); }
+bool deg_at_most(qt::angle_t a, int deg) {
+    return a <= qt::angle_from_deg(qt::q16_16::from_int(deg));
+}
 
 bool real_in(float v, double lo, double hi) {
     return std::isfinite(v) && v >= static_cast<float>(lo) && v <= static_cast<float>(hi);
@@ -78,12 +80,15 @@ void check_detect(const qt::cli::DetectOptions& o) {
     QT_FUZZ_CHECK(q16_in(q.aspect_tolerance, 1, 10));
     QT_FUZZ_CHECK(q16_in(q.min_side_coverage, 0, 1) && q16_in(q.min_score, 0, 1));
     QT_FUZZ_CHECK(q16_in(q.collinear_distance, 0, 100));
-    QT_FUZZ_CHECK(q.contrast == qt::Contrast::bright_board || q.contrast == qt::Contrast::dark_board ||
-                  q.contrast == qt::Contrast::any);
-    QT_FUZZ_CHECK(o.display_width >= 1 && o.display_width <= 4096 && o.display_height >= 1 && o.display_height <= 4096);
-    QT_FUZZ_CHECK(q.display_aspect.raw == qt::q16_16::from_ratio(o.display_width, o.display_height).raw);
+    QT_FUZZ_CHECK(q.contrast == qt::Contrast::bright_board ||
+                  q.contrast == qt::Contrast::dark_board || q.contrast == qt::Contrast::any);
+    QT_FUZZ_CHECK(o.display_width >= 1 && o.display_width <= 4096 && o.display_height >= 1 &&
+                  o.display_height <= 4096);
+    QT_FUZZ_CHECK(q.display_aspect.raw ==
+                  qt::q16_16::from_ratio(o.display_width, o.display_height).raw);
     QT_FUZZ_CHECK(o.max_quads >= 1 && o.max_quads <= 4);
-    QT_FUZZ_CHECK(o.track.model == qt::LineModel::closest_points || o.track.model == qt::LineModel::turn);
+    QT_FUZZ_CHECK(o.track.model == qt::LineModel::closest_points ||
+                  o.track.model == qt::LineModel::turn);
     QT_FUZZ_CHECK(o.track.filters >= 1 && o.track.filters <= 3);
     QT_FUZZ_CHECK(deg_at_most(o.track.gate_angle, 90));
     QT_FUZZ_CHECK(q16_in(o.track.gate_distance, 0, 1000));
@@ -104,7 +109,8 @@ void check_target(const qt::cli::TargetOptions& o, bool target) {
     QT_FUZZ_CHECK(g.ransac.max_iterations >= 1 && g.ransac.seed <= 2147483647u);
     if (target) {
         QT_FUZZ_CHECK(o.roi_set);
-        QT_FUZZ_CHECK(o.roi_x >= -100000 && o.roi_x <= 100000 && o.roi_y >= -100000 && o.roi_y <= 100000);
+        QT_FUZZ_CHECK(o.roi_x >= -100000 && o.roi_x <= 100000 && o.roi_y >= -100000 &&
+                      o.roi_y <= 100000);
         QT_FUZZ_CHECK(o.roi_w >= 1 && o.roi_w <= 24 && o.roi_h >= 1 && o.roi_h <= 24);
     }
 }
@@ -126,7 +132,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (qt::cli::Command c : {qt::cli::Command::detect, qt::cli::Command::track}) {
         qt::cli::DetectOptions o;
         std::string positional = "unset";
-        const int r = qt::cli::parse_command_line(args, c, usage, o, positional, dev_null(), dev_null());
+        const int r =
+            qt::cli::parse_command_line(args, c, usage, o, positional, dev_null(), dev_null());
         QT_FUZZ_CHECK(r == -1 || r == 0 || r == 2);
         if (r == 0) QT_FUZZ_CHECK(help);
         if (r == -1) {
@@ -134,11 +141,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             check_detect(o);
         }
     }
-    for (qt::cli::GeometryCommand c : {qt::cli::GeometryCommand::homography, qt::cli::GeometryCommand::target}) {
+    for (qt::cli::GeometryCommand c :
+         {qt::cli::GeometryCommand::homography, qt::cli::GeometryCommand::target}) {
         const bool target = c == qt::cli::GeometryCommand::target;
         qt::cli::TargetOptions o;
         std::vector<std::string> positional{"unset"};
-        const int r = qt::cli::parse_target_command_line(args, c, usage, o, positional, dev_null(), dev_null());
+        const int r = qt::cli::parse_target_command_line(args, c, usage, o, positional, dev_null(),
+                                                         dev_null());
         QT_FUZZ_CHECK(r == -1 || r == 0 || r == 2);
         if (r == 0) QT_FUZZ_CHECK(help);
         if (r == -1) {

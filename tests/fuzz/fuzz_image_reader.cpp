@@ -21,8 +21,8 @@
 namespace {
 
 using qt::io::FrameSource;
-using qt::io::kMaxImageSide;
 using qt::io::GreyImage;
+using qt::io::kMaxImageSide;
 
 std::string pick_temp_path() {
     std::string dir = "/tmp";
@@ -45,7 +45,8 @@ const std::string& temp_path() {
 
 void write_file(const std::string& path, const uint8_t* data, size_t size) {
     std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (f == nullptr || (size > 0 && std::fwrite(data, 1, size, f) != size) || std::fclose(f) != 0) {
+    if (f == nullptr || (size > 0 && std::fwrite(data, 1, size, f) != size) ||
+        std::fclose(f) != 0) {
         std::fprintf(stderr, "fuzz_image_reader: cannot write %s\n", path.c_str());
         std::abort();
     }
@@ -63,7 +64,8 @@ bool one_line_about(const std::string& error, const std::string& path) {
 }
 
 bool sane(const GreyImage& img) {
-    return img.width >= 1 && img.height >= 1 && img.width <= kMaxImageSide && img.height <= kMaxImageSide &&
+    return img.width >= 1 && img.height >= 1 && img.width <= kMaxImageSide &&
+           img.height <= kMaxImageSide &&
            img.pixels.size() == static_cast<size_t>(img.width) * static_cast<size_t>(img.height);
 }
 
@@ -77,7 +79,8 @@ void check(const std::string& path) {
         QT_FUZZ_CHECK(sane(image));
     } else {
         QT_FUZZ_CHECK(one_line_about(error, path));
-        QT_FUZZ_CHECK(image.width == 3 && image.height == 2 && image.pixels == std::vector<uint8_t>(6, 7));
+        QT_FUZZ_CHECK(image.width == 3 && image.height == 2 &&
+                      image.pixels == std::vector<uint8_t>(6, 7));
     }
 
     // FrameSource over the same file.
@@ -85,7 +88,7 @@ void check(const std::string& path) {
     std::string open_error;
     if (!source.open(path, open_error)) {
         QT_FUZZ_CHECK(one_line_about(open_error, path));
-        QT_FUZZ_CHECK(!ok);              // a file read_image accepts opens as a sequence
+        QT_FUZZ_CHECK(!ok);                  // a file read_image accepts opens as a sequence
         QT_FUZZ_CHECK(open_error == error);  // and a header it refuses is refused alike
         return;
     }

@@ -46,11 +46,11 @@
 #include <cstring>
 #include <new>
 
-#include "quads/board_detector.h"
 #include "fuzz_check.h"
 #include "gradient/gradient_stage.h"
-#include "tracking/quad_tracker.h"
+#include "quads/board_detector.h"
 #include "target/float/target_pipeline.h"
+#include "tracking/quad_tracker.h"
 
 namespace {
 
@@ -123,7 +123,8 @@ struct Pattern {
                 default: {
                     const double u = (x - cx) * c + (y - cy) * s, w = -(x - cx) * s + (y - cy) * c;
                     if (std::fabs(u) <= half_w && std::fabs(w) <= half_h) v = hi;
-                    if (kind == 4 && noise > 0) v += static_cast<int>(hash3(x, y, seed) % (2u * noise + 1)) - noise;
+                    if (kind == 4 && noise > 0)
+                        v += static_cast<int>(hash3(x, y, seed) % (2u * noise + 1)) - noise;
                 }
             }
             out[x] = static_cast<uint8_t>(v < 0 ? 0 : v > 255 ? 255 : v);
@@ -186,8 +187,10 @@ struct Run {
         }
         QT_FUZZ_CHECK(s == Status::ok || s == Status::previous_frame_incomplete);
         if (!bm.mixed()) {
-            if (bm.state == FrameModel::in_frame) QT_FUZZ_CHECK(s == Status::previous_frame_incomplete);
-            if (bm.state == FrameModel::idle || bm.state == FrameModel::complete || bm.state == FrameModel::finished)
+            if (bm.state == FrameModel::in_frame)
+                QT_FUZZ_CHECK(s == Status::previous_frame_incomplete);
+            if (bm.state == FrameModel::idle || bm.state == FrameModel::complete ||
+                bm.state == FrameModel::finished)
                 QT_FUZZ_CHECK(s == Status::ok);
         }
         bm = FrameModel{};
@@ -301,8 +304,10 @@ struct Run {
             // Rule 3 with corner_margin 0: inside the frame's outer pixel edges.
             for (int k = 0; k < 4; ++k) {
                 QT_FUZZ_CHECK(q.lines[k] < lines.line_count());
-                QT_FUZZ_CHECK(q.corners[k].x.raw >= -one / 2 && q.corners[k].x.raw <= lines.width() * one - one / 2);
-                QT_FUZZ_CHECK(q.corners[k].y.raw >= -one / 2 && q.corners[k].y.raw <= lines.height() * one - one / 2);
+                QT_FUZZ_CHECK(q.corners[k].x.raw >= -one / 2 &&
+                              q.corners[k].x.raw <= lines.width() * one - one / 2);
+                QT_FUZZ_CHECK(q.corners[k].y.raw >= -one / 2 &&
+                              q.corners[k].y.raw <= lines.height() * one - one / 2);
             }
         }
     }
@@ -364,7 +369,8 @@ struct Run {
                 QT_FUZZ_CHECK(s == Status::not_in_frame);
             }
         }
-        if (s == Status::not_in_frame && !again)  // no results (none of an earlier frame left standing)
+        if (s == Status::not_in_frame &&
+            !again)  // no results (none of an earlier frame left standing)
             QT_FUZZ_CHECK(board.lines().line_count() == 0 && board.lines().segment_count() == 0 &&
                           board.quad_count() == 0);
         check_lines_and_quads();
@@ -379,7 +385,8 @@ struct Run {
             tracker_active = false;
         }
         const auto& lines = board.lines();
-        check_tracked(tracker.step(lines.lines(), lines.line_count(), board.quads(), board.quad_count()));
+        check_tracked(
+            tracker.step(lines.lines(), lines.line_count(), board.quads(), board.quad_count()));
     }
 
     // --- target ------------------------------------------------------------------------------
@@ -420,7 +427,8 @@ struct Run {
         }
         QT_FUZZ_CHECK(s == Status::ok || s == Status::previous_frame_incomplete);
         if (tm.state == FrameModel::in_frame) QT_FUZZ_CHECK(s == Status::previous_frame_incomplete);
-        if (tm.state == FrameModel::idle || tm.state == FrameModel::complete) QT_FUZZ_CHECK(s == Status::ok);
+        if (tm.state == FrameModel::idle || tm.state == FrameModel::complete)
+            QT_FUZZ_CHECK(s == Status::ok);
         tm = FrameModel{};
         tm.state = FrameModel::in_frame;
         tm.w = w;
@@ -454,7 +462,8 @@ struct Run {
         const Status s = target.finish(out);
         QT_FUZZ_CHECK(valid(s));
         QT_FUZZ_CHECK(out.features <= 96);
-        if (s == Status::not_in_frame) QT_FUZZ_CHECK(!out.started && !out.tracking && out.features == 0);
+        if (s == Status::not_in_frame)
+            QT_FUZZ_CHECK(!out.started && !out.tracking && out.features == 0);
         if (tm.state != FrameModel::complete) {
             QT_FUZZ_CHECK(s == Status::not_in_frame);  // rows missing: the frame goes on
             return;
@@ -472,10 +481,12 @@ struct Run {
             QT_FUZZ_CHECK(out.started && out.tracking);
         }
         QT_FUZZ_CHECK(s == Status::ok || s == Status::capacity_exceeded);
-        QT_FUZZ_CHECK(std::strcmp(qt::homography_status_name(out.geometry.ransac.status), "unknown") != 0);
+        QT_FUZZ_CHECK(
+            std::strcmp(qt::homography_status_name(out.geometry.ransac.status), "unknown") != 0);
         if (out.geometry.ransac.status == qt::HomographyStatus::ok) {
             for (float m : out.geometry.ransac.h.m) QT_FUZZ_CHECK(std::isfinite(m));
-            QT_FUZZ_CHECK(std::isfinite(out.geometry.ransac.reprojection_px) && out.geometry.ransac.reprojection_px >= 0);
+            QT_FUZZ_CHECK(std::isfinite(out.geometry.ransac.reprojection_px) &&
+                          out.geometry.ransac.reprojection_px >= 0);
             QT_FUZZ_CHECK(out.geometry.ransac.inliers <= out.geometry.matches);
         }
         if (out.tracking) {
@@ -483,9 +494,12 @@ struct Run {
             if (out.estimate.state != qt::TargetState::lost)
                 QT_FUZZ_CHECK(std::isfinite(out.estimate.x) && std::isfinite(out.estimate.y));
             const qt::TargetTrackerParams& p = target.config().tracker;
-            const float most = p.max_radius_px > p.template_radius_px ? p.max_radius_px : p.template_radius_px;
-            QT_FUZZ_CHECK(std::isfinite(out.window.radius) && out.window.radius >= 0 && out.window.radius <= most);
-            if (out.window.radius > 0) QT_FUZZ_CHECK(std::isfinite(out.window.x) && std::isfinite(out.window.y));
+            const float most =
+                p.max_radius_px > p.template_radius_px ? p.max_radius_px : p.template_radius_px;
+            QT_FUZZ_CHECK(std::isfinite(out.window.radius) && out.window.radius >= 0 &&
+                          out.window.radius <= most);
+            if (out.window.radius > 0)
+                QT_FUZZ_CHECK(std::isfinite(out.window.x) && std::isfinite(out.window.y));
             if (out.hit.found) QT_FUZZ_CHECK(out.hit.positions >= 1);
         }
     }
@@ -509,8 +523,10 @@ struct Run {
                 const uint16_t w = size_from(in.u16(), kBoardW), h = size_from(in.u16(), kBoardH);
                 const uint8_t flags = in.u8();
                 params = qt::BoardParams{};
-                if (flags & 1) params.lines.edge_threshold = static_cast<uint16_t>(1 + in.u16() % 510);
-                if (flags & 2) params.lines.hough.threshold = static_cast<uint16_t>(1 + in.u8() % 255);
+                if (flags & 1)
+                    params.lines.edge_threshold = static_cast<uint16_t>(1 + in.u16() % 510);
+                if (flags & 2)
+                    params.lines.hough.threshold = static_cast<uint16_t>(1 + in.u8() % 255);
                 if (flags & 4) params.quads.contrast = qt::Contrast::any;
                 board_begin(w, h);
                 break;
@@ -599,7 +615,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     renew(tracker);
     renew(target);
     Run run(Program{data, size});
-    for (int ops = 0; ops < kOpBudget && !run.in.done() && run.pixels_left > 0 && run.finishes_left > 0; ++ops)
+    for (int ops = 0;
+         ops < kOpBudget && !run.in.done() && run.pixels_left > 0 && run.finishes_left > 0; ++ops)
         run.step();
     return 0;
 }

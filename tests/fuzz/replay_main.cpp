@@ -27,7 +27,8 @@ bool run_file(const fs::path& file) {
         std::fprintf(stderr, "fuzz_replay: cannot read %s\n", file.string().c_str());
         return false;
     }
-    const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::vector<char> bytes{std::istreambuf_iterator<char>(in),
+                                  std::istreambuf_iterator<char>()};
     std::printf("  %s (%zu bytes)\n", file.string().c_str(), bytes.size());
     std::fflush(stdout);
     LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
@@ -58,7 +59,8 @@ int main(int argc, char** argv) {
         for (const fs::directory_entry& e : fs::directory_iterator(p, ec))
             if (e.is_regular_file()) files.push_back(e.path());
         if (ec) {
-            std::fprintf(stderr, "fuzz_replay: cannot list %s: %s\n", p.string().c_str(), ec.message().c_str());
+            std::fprintf(stderr, "fuzz_replay: cannot list %s: %s\n", p.string().c_str(),
+                         ec.message().c_str());
             return 1;
         }
         std::sort(files.begin(), files.end());

@@ -38,12 +38,13 @@ TEST_CASE("direction_bin is round(atan2 / 22.5°) except within 0.02° of a bin 
             ++near_boundary_disagreements;
         }
     // 200 pairs on this machine; each was checked above to lie within 0.02° of a boundary.
-    INFO("pairs within 0.02 deg of a boundary binned to the neighbour: " << near_boundary_disagreements);
+    INFO("pairs within 0.02 deg of a boundary binned to the neighbour: "
+         << near_boundary_disagreements);
     REQUIRE(direction_bin(0, 0) == 0u);
-    REQUIRE(direction_bin(0, 7) == 4u);    // +y: down the image
+    REQUIRE(direction_bin(0, 7) == 4u);  // +y: down the image
     REQUIRE(direction_bin(-7, 0) == 8u);
     REQUIRE(direction_bin(0, -7) == 12u);
-    REQUIRE(direction_bin(5, 5) == 2u);    // 45°
+    REQUIRE(direction_bin(5, 5) == 2u);  // 45°
 }
 
 TEST_CASE("gradient word packs and unpacks every field at its extremes", "[direction]") {

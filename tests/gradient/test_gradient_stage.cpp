@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
-#include "gradient/gradient_stage.h"
 #include "base/prng.h"
+#include "gradient/gradient_stage.h"
 #include "support/spec_reference.h"
 
 using namespace qt;
@@ -29,8 +29,7 @@ Status run_frame(GradientStage<MaxW>& stage, const std::vector<uint8_t>& px, int
     return s;
 }
 
-void require_equal_to_reference(const std::vector<uint8_t>& px, int w, int h,
-                                const Collected& c) {
+void require_equal_to_reference(const std::vector<uint8_t>& px, int w, int h, const Collected& c) {
     const auto ref = ref::frame_gradients(px, w, h);
     REQUIRE(c.words.size() == ref.size());
     for (int y = 0; y < h; ++y) REQUIRE(c.row_order[static_cast<size_t>(y)] == y);

@@ -79,7 +79,8 @@ TEST_CASE("core gradient stage reproduces every well-formed golden vector case",
             if (!(got[i] == expected[i]))
                 FAIL("beat " << i << ": expected word " << std::hex << expected[i].word << " tuser "
                              << expected[i].tuser << " tlast " << expected[i].tlast << ", got "
-                             << got[i].word << " tuser " << got[i].tuser << " tlast " << got[i].tlast);
+                             << got[i].word << " tuser " << got[i].tuser << " tlast "
+                             << got[i].tlast);
         }
         ++checked;
     }

@@ -15,15 +15,14 @@
 #include "support/temp_dir.h"
 
 using qt::io::FrameSource;
+using qt::io::GreyImage;
 using qt::io::read_image;
 using qt::io::write_pgm;
-using qt::io::GreyImage;
 namespace fs = std::filesystem;
 
 namespace {
 
 using qt::test::TempDir;
-
 
 std::string bytes(std::initializer_list<int> values) {
     std::string s;
@@ -31,7 +30,9 @@ std::string bytes(std::initializer_list<int> values) {
     return s;
 }
 
-std::string repeat(int value, int n) { return std::string(static_cast<size_t>(n), static_cast<char>(value)); }
+std::string repeat(int value, int n) {
+    return std::string(static_cast<size_t>(n), static_cast<char>(value));
+}
 
 std::string slurp(const std::string& path) {
     std::string s;
@@ -45,7 +46,9 @@ std::string slurp(const std::string& path) {
 
 // Pixels as ints, so that a failed comparison prints numbers rather than characters.
 std::vector<int> px(std::initializer_list<int> values) { return std::vector<int>(values); }
-std::vector<int> ints(const std::vector<uint8_t>& pixels) { return std::vector<int>(pixels.begin(), pixels.end()); }
+std::vector<int> ints(const std::vector<uint8_t>& pixels) {
+    return std::vector<int>(pixels.begin(), pixels.end());
+}
 std::vector<int> ints(const std::string& raw) {
     std::vector<int> v;
     for (char c : raw) v.push_back(static_cast<unsigned char>(c));
@@ -73,7 +76,8 @@ void check_read_fails(const std::string& path, const std::string& fragment) {
 
 // The sequence `spec` delivers one frame, then fails saying `fragment` about `path`, and keeps
 // failing with the same message.
-void check_second_frame_fails(const std::string& spec, const std::string& path, const std::string& fragment) {
+void check_second_frame_fails(const std::string& spec, const std::string& path,
+                              const std::string& fragment) {
     FrameSource src;
     std::string error;
     REQUIRE(src.open(spec, error));
@@ -104,7 +108,8 @@ TEST_CASE("write_pgm writes a P5 file that read_image reads back", "[image_io]")
     const std::string path = tmp.path("out.pgm");
     std::string error;
     REQUIRE(write_pgm(path, img, error));
-    CHECK(slurp(path) == "P5\n5 3\n255\n" + bytes({0, 1, 2, 3, 4, 10, 32, 35, 13, 9, 128, 200, 253, 254, 255}));
+    CHECK(slurp(path) ==
+          "P5\n5 3\n255\n" + bytes({0, 1, 2, 3, 4, 10, 32, 35, 13, 9, 128, 200, 253, 254, 255}));
     const GreyImage back = read_ok(path);
     CHECK(back.width == 5);
     CHECK(back.height == 3);
@@ -126,8 +131,9 @@ TEST_CASE("write_pgm writes a P5 file that read_image reads back", "[image_io]")
 TEST_CASE("PGM headers take comments and any whitespace, then one whitespace byte", "[image_io]") {
     TempDir tmp;
     SECTION("comments between every field, trailing bytes after the raster ignored") {
-        const std::string p = tmp.file("c.pgm", "P5#after magic\n3\t# width\r\n \v2\f#height\n#again\n255\n" +
-                                                    bytes({9, 8, 7, 6, 5, 4}) + "trailing junk");
+        const std::string p =
+            tmp.file("c.pgm", "P5#after magic\n3\t# width\r\n \v2\f#height\n#again\n255\n" +
+                                  bytes({9, 8, 7, 6, 5, 4}) + "trailing junk");
         const GreyImage img = read_ok(p);
         CHECK(img.width == 3);
         CHECK(img.height == 2);
@@ -142,7 +148,8 @@ TEST_CASE("PGM headers take comments and any whitespace, then one whitespace byt
         CHECK(ints(img.pixels) == px({10, 7}));
     }
     SECTION("the largest side accepted is 16384") {
-        const GreyImage img = read_ok(tmp.file("wide.pgm", "P5 16384 1 255\n" + repeat(200, 16384)));
+        const GreyImage img =
+            read_ok(tmp.file("wide.pgm", "P5 16384 1 255\n" + repeat(200, 16384)));
         CHECK(img.width == 16384);
         CHECK(img.height == 1);
         CHECK(img.pixels.size() == 16384u);
@@ -156,10 +163,12 @@ TEST_CASE("PGM samples below maxval 255 are scaled to 0..255, rounded to nearest
     CHECK(ints(read_ok(tmp.file("m15.pgm", "P5 6 1 15\n" + bytes({0, 1, 7, 8, 14, 15}))).pixels) ==
           px({0, 17, 119, 136, 238, 255}));
     // maxval 7: 255 v / 7 = 0, 36.43, 72.86, 109.29, 145.71, 182.14, 218.57, 255.
-    CHECK(ints(read_ok(tmp.file("m7.pgm", "P5 8 1 7\n" + bytes({0, 1, 2, 3, 4, 5, 6, 7}))).pixels) ==
-          px({0, 36, 73, 109, 146, 182, 219, 255}));
+    CHECK(
+        ints(read_ok(tmp.file("m7.pgm", "P5 8 1 7\n" + bytes({0, 1, 2, 3, 4, 5, 6, 7}))).pixels) ==
+        px({0, 36, 73, 109, 146, 182, 219, 255}));
     // maxval 2: 255/2 = 127.5, a tie, goes up.
-    CHECK(ints(read_ok(tmp.file("m2.pgm", "P5 3 1 2\n" + bytes({0, 1, 2}))).pixels) == px({0, 128, 255}));
+    CHECK(ints(read_ok(tmp.file("m2.pgm", "P5 3 1 2\n" + bytes({0, 1, 2}))).pixels) ==
+          px({0, 128, 255}));
     // maxval 1: a bitmap.
     CHECK(ints(read_ok(tmp.file("m1.pgm", "P5 2 1 1\n" + bytes({1, 0}))).pixels) == px({255, 0}));
 }
@@ -172,18 +181,21 @@ TEST_CASE("PPM is converted to grey with (77 R + 150 G + 29 B + 128) >> 8", "[im
     // white 256·255 + 128 = 65408, / 256 = 255.5 -> 255;  black -> 0
     // (10, 200, 30): 770 + 30000 + 870 + 128 = 31768 = 124·256 + 24 -> 124
     // (100, 100, 100): 25600 + 128 = 25728 -> 100
-    const std::string p = tmp.file("c.ppm", "P6\n# colours\n7 1\n255\n" +
-                                                bytes({255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 10,
-                                                       200, 30, 100, 100, 100}));
+    const std::string p =
+        tmp.file("c.ppm", "P6\n# colours\n7 1\n255\n" +
+                              bytes({255, 0, 0, 0, 255, 0,   0,  0,   255, 255, 255,
+                                     255, 0, 0, 0, 10,  200, 30, 100, 100, 100}));
     const GreyImage img = read_ok(p);
     CHECK(img.width == 7);
     CHECK(img.height == 1);
     CHECK(ints(img.pixels) == px({77, 149, 29, 255, 0, 124, 100}));
 
     SECTION("channels are scaled to 0..255 before the conversion") {
-        // maxval 15: (15, 0, 0) -> (255, 0, 0) -> 77; (1, 1, 1) -> (17, 17, 17) -> (256·17 + 128) >> 8 = 17;
-        // (0, 15, 15) -> (0, 255, 255): 38250 + 7395 + 128 = 45773 = 178·256 + 205 -> 178.
-        const GreyImage m = read_ok(tmp.file("m.ppm", "P6 3 1 15\n" + bytes({15, 0, 0, 1, 1, 1, 0, 15, 15})));
+        // maxval 15: (15, 0, 0) -> (255, 0, 0) -> 77; (1, 1, 1) -> (17, 17, 17) -> (256·17 + 128)
+        // >> 8 = 17; (0, 15, 15) -> (0, 255, 255): 38250 + 7395 + 128 = 45773 = 178·256 + 205 ->
+        // 178.
+        const GreyImage m =
+            read_ok(tmp.file("m.ppm", "P6 3 1 15\n" + bytes({15, 0, 0, 1, 1, 1, 0, 15, 15})));
         CHECK(ints(m.pixels) == px({77, 17, 178}));
     }
 }
@@ -197,9 +209,11 @@ TEST_CASE("Y4M: every frame's Y plane, chroma planes skipped", "[image_io]") {
             y0.push_back(static_cast<char>(i));
             y1.push_back(static_cast<char>(100 + i));
         }
-        const std::string p = tmp.file("a.y4m", "YUV4MPEG2 W5 H3 F30:1 Ip A1:1 C420jpeg XYSCSS=420JPEG\n"
-                                                "FRAME\n" + y0 + repeat(0x80, 12) +
-                                                "FRAME Ixyz\n" + y1 + repeat(0x81, 12));
+        const std::string p =
+            tmp.file("a.y4m",
+                     "YUV4MPEG2 W5 H3 F30:1 Ip A1:1 C420jpeg XYSCSS=420JPEG\n"
+                     "FRAME\n" +
+                         y0 + repeat(0x80, 12) + "FRAME Ixyz\n" + y1 + repeat(0x81, 12));
         const GreyImage first = read_ok(p);
         CHECK(first.width == 5);
         CHECK(first.height == 3);
@@ -220,8 +234,9 @@ TEST_CASE("Y4M: every frame's Y plane, chroma planes skipped", "[image_io]") {
         CHECK(src.frames_read() == 2);
     }
     SECTION("mono has no chroma") {
-        const std::string p = tmp.file("m.y4m", "YUV4MPEG2 W3 H2 F25:1 Cmono\nFRAME\n" + bytes({1, 2, 3, 4, 5, 6}) +
-                                                    "FRAME\n" + bytes({7, 8, 9, 10, 11, 12}));
+        const std::string p =
+            tmp.file("m.y4m", "YUV4MPEG2 W3 H2 F25:1 Cmono\nFRAME\n" + bytes({1, 2, 3, 4, 5, 6}) +
+                                  "FRAME\n" + bytes({7, 8, 9, 10, 11, 12}));
         FrameSource src;
         std::string error;
         REQUIRE(src.open(p, error));
@@ -239,12 +254,13 @@ TEST_CASE("Y4M: every frame's Y plane, chroma planes skipped", "[image_io]") {
         const struct {
             const char* c;
             int chroma;
-        } cases[] = {{"", 8}, {" C420", 8}, {" C420paldv", 8}, {" C420mpeg2", 8}, {" C422", 12}, {" C444", 18}};
+        } cases[] = {{"", 8},           {" C420", 8},  {" C420paldv", 8},
+                     {" C420mpeg2", 8}, {" C422", 12}, {" C444", 18}};
         for (const auto& k : cases) {
             INFO("colour token '" << k.c << "'");
-            const std::string p = tmp.file("k.y4m", std::string("YUV4MPEG2 W3 H3") + k.c + "\nFRAME\n" + repeat(1, 9) +
-                                                        repeat(2, k.chroma) + "FRAME\n" + repeat(3, 9) +
-                                                        repeat(4, k.chroma));
+            const std::string p = tmp.file(
+                "k.y4m", std::string("YUV4MPEG2 W3 H3") + k.c + "\nFRAME\n" + repeat(1, 9) +
+                             repeat(2, k.chroma) + "FRAME\n" + repeat(3, 9) + repeat(4, k.chroma));
             FrameSource src;
             std::string error;
             REQUIRE(src.open(p, error));
@@ -306,7 +322,8 @@ TEST_CASE("FrameSource: printf patterns of PGM files and single images", "[image
     SECTION("a bad frame file stops the sequence with its own name in the message") {
         tmp.file("h0.pgm", "P5 1 1 255\n" + bytes({1}));
         const std::string bad = tmp.file("h1.pgm", "P5 2 2 255\n" + bytes({1}));
-        check_second_frame_fails(tmp.path("h%d.pgm"), bad, "truncated pixel data: expected 4 bytes, got 1");
+        check_second_frame_fails(tmp.path("h%d.pgm"), bad,
+                                 "truncated pixel data: expected 4 bytes, got 1");
     }
     SECTION("a single image is a sequence of one") {
         const std::string p = tmp.file("one.pgm", "P5 1 1 255\n" + bytes({200}));
@@ -324,7 +341,8 @@ TEST_CASE("FrameSource: printf patterns of PGM files and single images", "[image
         const std::string none = tmp.path("none%02d.pgm");
         CHECK_FALSE(src.open(none, error));
         check_message(error, none,
-                      "no frame files (neither " + tmp.path("none00.pgm") + " nor " + tmp.path("none01.pgm") + " exists)");
+                      "no frame files (neither " + tmp.path("none00.pgm") + " nor " +
+                          tmp.path("none01.pgm") + " exists)");
         for (const char* pattern : {"f%s.pgm", "f%d_%d.pgm", "f%3d.pgm", "f%0d.pgm", "f%"}) {
             const std::string spec = tmp.path(pattern);
             INFO(pattern);
@@ -357,20 +375,25 @@ TEST_CASE("PGM/PPM errors: one line, path first, saying what is wrong", "[image_
     }
     SECTION("unknown magic") {
         for (const std::string& content :
-             {std::string("GIF89a"), std::string("P2 1 1 255\n7\n"), std::string("P7\n"), std::string("P51 1 255\n"),
-              std::string(""), std::string("YUV4MPEG2X W1 H1\n")}) {
+             {std::string("GIF89a"), std::string("P2 1 1 255\n7\n"), std::string("P7\n"),
+              std::string("P51 1 255\n"), std::string(""), std::string("YUV4MPEG2X W1 H1\n")}) {
             INFO("content: " << content);
             check_read_fails(tmp.file("u.bin", content), "not a PGM (P5), PPM (P6) or Y4M file");
         }
     }
     SECTION("truncated header") {
-        check_read_fails(tmp.file("t1.pgm", "P5"), "truncated PGM header: file ends before the width");
-        check_read_fails(tmp.file("t2.pgm", "P5\n4 "), "truncated PGM header: file ends before the height");
+        check_read_fails(tmp.file("t1.pgm", "P5"),
+                         "truncated PGM header: file ends before the width");
+        check_read_fails(tmp.file("t2.pgm", "P5\n4 "),
+                         "truncated PGM header: file ends before the height");
         check_read_fails(tmp.file("t3.pgm", "P5\n4 # a comment that never ends"),
                          "truncated PGM header: file ends before the height");
-        check_read_fails(tmp.file("t4.pgm", "P5\n4 3"), "truncated PGM header: file ends before the maxval");
-        check_read_fails(tmp.file("t5.pgm", "P5\n4 3\n255"), "truncated PGM header: file ends after the maxval");
-        check_read_fails(tmp.file("t6.ppm", "P6 4 3"), "truncated PPM header: file ends before the maxval");
+        check_read_fails(tmp.file("t4.pgm", "P5\n4 3"),
+                         "truncated PGM header: file ends before the maxval");
+        check_read_fails(tmp.file("t5.pgm", "P5\n4 3\n255"),
+                         "truncated PGM header: file ends after the maxval");
+        check_read_fails(tmp.file("t6.ppm", "P6 4 3"),
+                         "truncated PPM header: file ends before the maxval");
     }
     SECTION("non-numeric, negative and zero sizes") {
         check_read_fails(tmp.file("n1.pgm", "P5\nab 3\n255\n"),
@@ -391,7 +414,8 @@ TEST_CASE("PGM/PPM errors: one line, path first, saying what is wrong", "[image_
         check_read_fails(tmp.file("l1.pgm", "P5\n16385 2\n255\n"),
                          "image too large: 16385 x 2 (at most 16384 pixels per side)");
         check_read_fails(tmp.file("l2.pgm", "P5\n2 16385\n255\n"), "image too large: 2 x 16385");
-        check_read_fails(tmp.file("l3.pgm", "P5 1 99999999999999999999999 255\n"), "image too large");
+        check_read_fails(tmp.file("l3.pgm", "P5 1 99999999999999999999999 255\n"),
+                         "image too large");
     }
     SECTION("maxval out of range") {
         check_read_fails(tmp.file("x0.pgm", "P5 1 1 0\n" + bytes({0})),
@@ -416,17 +440,20 @@ TEST_CASE("PGM/PPM errors: one line, path first, saying what is wrong", "[image_
                          "truncated pixel data: expected 12 bytes, got 7");
         check_read_fails(tmp.file("r2.ppm", "P6\n2 2\n255\n" + repeat(1, 5)),
                          "truncated pixel data: expected 12 bytes, got 5");
-        check_read_fails(tmp.file("r3.pgm", "P5\n4 3\n255\n"), "truncated pixel data: expected 12 bytes, got 0");
+        check_read_fails(tmp.file("r3.pgm", "P5\n4 3\n255\n"),
+                         "truncated pixel data: expected 12 bytes, got 0");
     }
 }
 
 TEST_CASE("Y4M errors: one line, path first, frame numbers from 0", "[image_io]") {
     TempDir tmp;
-    const std::string frame15 = "FRAME\n" + repeat(1, 15) + repeat(2, 12);  // a whole 5 x 3 420 frame
+    const std::string frame15 =
+        "FRAME\n" + repeat(1, 15) + repeat(2, 12);  // a whole 5 x 3 420 frame
     SECTION("unsupported colour space") {
         check_read_fails(tmp.file("c1.y4m", "YUV4MPEG2 W5 H3 C420p10\nFRAME\n" + repeat(0, 60)),
                          "unsupported Y4M colour space '420p10'");
-        check_read_fails(tmp.file("c2.y4m", "YUV4MPEG2 W5 H3 C444alpha\n"), "unsupported Y4M colour space '444alpha'");
+        check_read_fails(tmp.file("c2.y4m", "YUV4MPEG2 W5 H3 C444alpha\n"),
+                         "unsupported Y4M colour space '444alpha'");
         FrameSource src;
         std::string error;
         const std::string p = tmp.file("c3.y4m", "YUV4MPEG2 W5 H3 Cmono16\n");
@@ -434,30 +461,38 @@ TEST_CASE("Y4M errors: one line, path first, frame numbers from 0", "[image_io]"
         check_message(error, p, "unsupported Y4M colour space 'mono16'");
     }
     SECTION("bad header") {
-        check_read_fails(tmp.file("h1.y4m", "YUV4MPEG2 H3 C420jpeg\n"), "Y4M header lacks the width (W)");
+        check_read_fails(tmp.file("h1.y4m", "YUV4MPEG2 H3 C420jpeg\n"),
+                         "Y4M header lacks the width (W)");
         check_read_fails(tmp.file("h2.y4m", "YUV4MPEG2 W5\n"), "Y4M header lacks the height (H)");
-        check_read_fails(tmp.file("h3.y4m", "YUV4MPEG2 W5x H3\n"), "Y4M header: width '5x' is not a positive integer");
-        check_read_fails(tmp.file("h4.y4m", "YUV4MPEG2 W5 H0\n"), "Y4M header: height '0' is not a positive integer");
+        check_read_fails(tmp.file("h3.y4m", "YUV4MPEG2 W5x H3\n"),
+                         "Y4M header: width '5x' is not a positive integer");
+        check_read_fails(tmp.file("h4.y4m", "YUV4MPEG2 W5 H0\n"),
+                         "Y4M header: height '0' is not a positive integer");
         check_read_fails(tmp.file("h5.y4m", "YUV4MPEG2 W16385 H3\n"), "image too large: 16385 x 3");
-        check_read_fails(tmp.file("h6.y4m", "YUV4MPEG2 W5 H3"), "truncated Y4M header (no end of line)");
+        check_read_fails(tmp.file("h6.y4m", "YUV4MPEG2 W5 H3"),
+                         "truncated Y4M header (no end of line)");
     }
     SECTION("bad FRAME marker") {
         check_read_fails(tmp.file("f1.y4m", "YUV4MPEG2 W5 H3\nFRAMX\n" + repeat(1, 27)),
                          "Y4M frame 0: bad FRAME marker 'FRAMX'");
-        check_read_fails(tmp.file("f2.y4m", "YUV4MPEG2 W5 H3\nxyz"), "Y4M frame 0: bad FRAME marker 'xyz'");
+        check_read_fails(tmp.file("f2.y4m", "YUV4MPEG2 W5 H3\nxyz"),
+                         "Y4M frame 0: bad FRAME marker 'xyz'");
         check_read_fails(tmp.file("f3.y4m", "YUV4MPEG2 W5 H3\nFRAME"),
                          "Y4M frame 0: truncated (file ends inside the FRAME line)");
         // Frame 1's marker is garbled: frame 0 is delivered, then the error, then the same error.
-        const std::string p = tmp.file("f4.y4m", "YUV4MPEG2 W5 H3\n" + frame15 + "FRAMES\n" + repeat(1, 27));
+        const std::string p =
+            tmp.file("f4.y4m", "YUV4MPEG2 W5 H3\n" + frame15 + "FRAMES\n" + repeat(1, 27));
         check_second_frame_fails(p, p, "Y4M frame 1: bad FRAME marker 'FRAMES'");
     }
     SECTION("truncated frame") {
         // 5 x 3 420: 15 Y + 12 chroma = 27 bytes a frame. Frame 1 stops inside its chroma (20
         // bytes) or inside its Y plane (9 bytes).
         for (int have : {20, 9}) {
-            const std::string p =
-                tmp.file("t.y4m", "YUV4MPEG2 W5 H3 C420jpeg\n" + frame15 + "FRAME\n" + repeat(3, have));
-            check_second_frame_fails(p, p, "Y4M frame 1: truncated frame data: expected 27 bytes, got " + std::to_string(have));
+            const std::string p = tmp.file(
+                "t.y4m", "YUV4MPEG2 W5 H3 C420jpeg\n" + frame15 + "FRAME\n" + repeat(3, have));
+            check_second_frame_fails(p, p,
+                                     "Y4M frame 1: truncated frame data: expected 27 bytes, got " +
+                                         std::to_string(have));
         }
         check_read_fails(tmp.file("t0.y4m", "YUV4MPEG2 W5 H3\nFRAME\n" + repeat(1, 26)),
                          "Y4M frame 0: truncated frame data: expected 27 bytes, got 26");

@@ -94,7 +94,7 @@ TEST_CASE("duplicates of one edge merge into one refitted line spanning them", "
 }
 
 TEST_CASE("two lines through the origin share C = (0, 0) but do not merge", "[cluster]") {
-    const Segment a = seg(-40, 0, 40, 0, 50);                 // y = 0
+    const Segment a = seg(-40, 0, 40, 0, 50);                                       // y = 0
     const Segment b = seg(-30, -30 * std::sqrt(3.0), 30, 30 * std::sqrt(3.0), 50);  // 60°
     REQUIRE(std::hypot(px(a.cx) - px(b.cx), px(a.cy) - px(b.cy)) < 0.01);
     REQUIRE(cluster({a, b}).count == 2);
@@ -106,8 +106,10 @@ TEST_CASE("two lines through the origin share C = (0, 0) but do not merge", "[cl
     REQUIRE(cluster({a, b}, paper_only).count == 1);
 }
 
-TEST_CASE("near the origin, sides of two shapes 4 degrees apart pass S and the angle test but do not merge",
-          "[cluster]") {
+TEST_CASE(
+    "near the origin, sides of two shapes 4 degrees apart pass S and the angle test but do not "
+    "merge",
+    "[cluster]") {
     // Hand-worked (a generated scene had this pair): a runs at 53.4°, b at 49.5°, overlapping
     // along their direction. Their lines pass about 31 px from the origin, so C moves only
     // rho·Δθ ≈ 2 px with the 3.9° between them: |Ca − Cb| < 3 px, within the paper's 6 px.
@@ -149,7 +151,8 @@ TEST_CASE("cluster output capacity is reported", "[cluster]") {
     uint8_t scratch[3];
     uint16_t count = 0;
     ClusterStats stats;
-    REQUIRE(cluster_segments(segs, 3, ClusterParams{}, scratch, out, 2, &count, &stats) == Status::ok);
+    REQUIRE(cluster_segments(segs, 3, ClusterParams{}, scratch, out, 2, &count, &stats) ==
+            Status::ok);
     REQUIRE(count == 2);
     REQUIRE(stats.clusters_dropped == 1);
     // 179° and 1° are 2° apart modulo 180° (each conversion rounds by up to half a unit).
@@ -161,7 +164,8 @@ TEST_CASE("cluster output capacity is reported", "[cluster]") {
 TEST_CASE("line ends near a corner move to the intersection; others stay", "[cluster]") {
     // The sides y = 50 (x from 12 to 100) and x = 10 (y from 52 to 120) of a corner at (10, 50):
     // both ends 2 px short of it. A third line, parallel to the first, stays as it is.
-    Segment lines[3] = {seg(12, 50, 100, 50, 80), seg(10, 52, 10, 120, 60), seg(12, 60, 100, 60, 80)};
+    Segment lines[3] = {seg(12, 50, 100, 50, 80), seg(10, 52, 10, 120, 60),
+                        seg(12, 60, 100, 60, 80)};
     CornerCandidate scratch[6];
     const uint16_t moved = join_corners(lines, 3, CornerParams{}, scratch);
     // The third line's end at (12, 60) is 2 px from the second line, but the second line's

@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
-#include "lines/edge_stage.h"
-#include "gradient/gradient_stage.h"
 #include "base/prng.h"
+#include "gradient/gradient_stage.h"
+#include "lines/edge_stage.h"
 
 using namespace qt;
 
@@ -23,8 +23,10 @@ EdgeStage<64> g_edges;
 
 EdgeList run(Frame& f, uint16_t threshold) {
     EdgeList list = g_storage.view();
-    REQUIRE(g_gradient.begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h)) == Status::ok);
-    REQUIRE(g_edges.begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h), threshold, list) == Status::ok);
+    REQUIRE(g_gradient.begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h)) ==
+            Status::ok);
+    REQUIRE(g_edges.begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h), threshold,
+                                list) == Status::ok);
     for (int y = 0; y < f.h; ++y)
         REQUIRE(g_gradient.push_row(&f.at(0, y), static_cast<uint16_t>(f.w),
                                     [&](uint16_t, const gradient_word* words, uint16_t n) {
@@ -144,8 +146,9 @@ TEST_CASE("edge stage statuses: bad sizes, wrong rows, rows after the end", "[ed
     REQUIRE(g_edges.push_row(words, 10) == Status::not_in_frame);
 }
 
-TEST_CASE("camera rows packed for NMS equal gradient words packed for NMS, at any width and threshold",
-          "[edges]") {
+TEST_CASE(
+    "camera rows packed for NMS equal gradient words packed for NMS, at any width and threshold",
+    "[edges]") {
     // The software path (gradient_nms_row: magnitudes first, directions only where a
     // magnitude reaches the threshold) against the word path (gradient_row, the FPGA block's
     // words, checked against the HDL by the vector tests) packed by pack_nms_row, with the
@@ -163,9 +166,12 @@ TEST_CASE("camera rows packed for NMS equal gradient words packed for NMS, at an
                 const uint32_t style = rng.below(3);
                 for (auto& r : rows)
                     for (uint16_t x = 0; x < width; ++x)
-                        r[x] = style == 0   ? static_cast<uint8_t>(rng.below(256))
-                               : style == 1 ? static_cast<uint8_t>(rng.below(2) * 255)
-                                            : static_cast<uint8_t>(100 + rng.below(2) * ((threshold / 2 + rng.below(3)) % 156));
+                        r[x] =
+                            style == 0 ? static_cast<uint8_t>(rng.below(256))
+                            : style == 1
+                                ? static_cast<uint8_t>(rng.below(2) * 255)
+                                : static_cast<uint8_t>(
+                                      100 + rng.below(2) * ((threshold / 2 + rng.below(3)) % 156));
                 gradient_nms_row(rows[0], rows[1], rows[2], width, threshold, fast);
                 gradient_row(rows[0], rows[1], rows[2], width, words);
                 pack_nms_row(words, width, reference);
@@ -185,8 +191,9 @@ TEST_CASE("camera rows packed for NMS equal gradient words packed for NMS, at an
     REQUIRE(with_direction < entries);
 }
 
-TEST_CASE("a full edge list keeps every edge at or above a floor, the strongest, in any raster order",
-          "[edges]") {
+TEST_CASE(
+    "a full edge list keeps every edge at or above a floor, the strongest, in any raster order",
+    "[edges]") {
     // 40 rows of 50 points with random magnitudes, the strongest in the last rows (a raster
     // order that fills the list with weak points first): 2000 pushes into a capacity of 300.
     EdgeListStorage<300, 40> storage;

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
+#include "base/prng.h"
 #include "lines/line_detector.h"
 #include "scene/line_scene.h"
-#include "base/prng.h"
 
 using namespace qt;
 
@@ -15,8 +15,8 @@ namespace {
 LineDetectorQvga g_det;
 
 Status detect(const io::GreyImage& img, const LineParams& p) {
-    REQUIRE(g_det.begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height), p) ==
-            Status::ok);
+    REQUIRE(g_det.begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height),
+                              p) == Status::ok);
     for (int y = 0; y < img.height; ++y)
         REQUIRE(g_det.push_row(img.row(y), static_cast<uint16_t>(img.width)) == Status::ok);
     return g_det.finish();
@@ -45,13 +45,15 @@ TEST_CASE("PPHT accumulator equals a double-precision Hough of the same votes wi
     const int n_theta = p.hough.theta_bins, step = p.hough.rho_step;
     const int half = static_cast<int>((hough_bins_for(320, 240, n_theta, step) / n_theta - 1) / 2);
     const int n_rho = 2 * half + 1;
-    std::vector<int> ref(static_cast<size_t>(n_theta * n_rho), 0), ambiguous(static_cast<size_t>(n_theta), 0);
+    std::vector<int> ref(static_cast<size_t>(n_theta * n_rho), 0),
+        ambiguous(static_cast<size_t>(n_theta), 0);
     const double kPi = 3.14159265358979323846;
     const int window = (p.hough.vote_window_deg * n_theta + 179) / 180;
     for (uint16_t i = 0; i < edges.size(); ++i) {
         const double x = ep::x(edges[i]) - 160.0, y = ep::y(edges[i]) - 120.0;
         // The line normal is the gradient direction: bin d points at d·22.5°, mod 180°.
-        const int centre = static_cast<int>(std::lround((ep::dir(edges[i]) % 8) * 22.5 / (180.0 / n_theta)));
+        const int centre =
+            static_cast<int>(std::lround((ep::dir(edges[i]) % 8) * 22.5 / (180.0 / n_theta)));
         for (int j = centre - window; j <= centre + window; ++j) {
             const int t = (j + n_theta) % n_theta;
             const double theta = t * kPi / n_theta;
@@ -72,7 +74,8 @@ TEST_CASE("PPHT accumulator equals a double-precision Hough of the same votes wi
     Segment out[4];
     uint16_t count = 0;
     HoughStats stats;
-    REQUIRE(hough_segments(copy, 320, 240, p.hough, storage.view(), out, 4, &count, &stats) == Status::ok);
+    REQUIRE(hough_segments(copy, 320, 240, p.hough, storage.view(), out, 4, &count, &stats) ==
+            Status::ok);
     REQUIRE(count == 0);
     long total_fixed = 0, total_ref = 0;
     for (int t = 0; t < n_theta; ++t) {
@@ -106,7 +109,8 @@ TEST_CASE("PPHT is deterministic for a seed and depends on it", "[hough]") {
     p.hough.seed = 99;
     REQUIRE(detect(img, p) == Status::ok);
     bool differs = g_det.segment_count() != first.size();
-    for (size_t i = 0; !differs && i < first.size(); ++i) differs = g_det.segments()[i].x1 != first[i].x1;
+    for (size_t i = 0; !differs && i < first.size(); ++i)
+        differs = g_det.segments()[i].x1 != first[i].x1;
     REQUIRE(differs);  // another order finds the segments in another order at least
 }
 
@@ -190,8 +194,10 @@ TEST_CASE("the QVGA lines stage fits 48 KiB of RAM", "[hough]") {
     REQUIRE(LineDetectorQvga::ram_bytes() == sizeof(LineDetectorQvga));
 }
 
-TEST_CASE("a segment's end: a run after a gap of g pixels counts once it has g points or another run follows",
-          "[hough]") {
+TEST_CASE(
+    "a segment's end: a run after a gap of g pixels counts once it has g points or another run "
+    "follows",
+    "[hough]") {
     // Hand-built edge lists: the row y = 50 from x = 20 to 99 (a horizontal edge, gradient
     // direction bin 4), then points past a gap. Expected ends worked by hand from the rule.
     struct Case {
@@ -200,12 +206,12 @@ TEST_CASE("a segment's end: a run after a gap of g pixels counts once it has g p
     };
     const Case cases[] = {
         {{}, 99},
-        {{103}, 99},                 // gap 3, one point: noise
-        {{103, 104}, 99},            // gap 3, a run of 2 < 3
-        {{103, 104, 105}, 105},      // gap 3, a run of 3
-        {{101}, 101},                // gap 1: part of the line at once
-        {{102, 105, 108}, 105},      // runs of 1 after gaps of 2: each counts once the next begins
-        {{102, 103, 107}, 103},      // a run of 2 after a gap of 2 counts; the lone 107 does not
+        {{103}, 99},             // gap 3, one point: noise
+        {{103, 104}, 99},        // gap 3, a run of 2 < 3
+        {{103, 104, 105}, 105},  // gap 3, a run of 3
+        {{101}, 101},            // gap 1: part of the line at once
+        {{102, 105, 108}, 105},  // runs of 1 after gaps of 2: each counts once the next begins
+        {{102, 103, 107}, 103},  // a run of 2 after a gap of 2 counts; the lone 107 does not
     };
     static EdgeListStorage<256, 100> storage;
     static HoughStorage<hough_bins_for(160, 100, 90, 2), 90> accumulator;
@@ -219,8 +225,8 @@ TEST_CASE("a segment's end: a run after a gap of g pixels counts once it has g p
         Segment out[4];
         uint16_t count = 0;
         HoughStats stats;
-        REQUIRE(hough_segments(list, 160, 100, HoughParams{}, accumulator.view(), out, 4, &count, &stats) ==
-                Status::ok);
+        REQUIRE(hough_segments(list, 160, 100, HoughParams{}, accumulator.view(), out, 4, &count,
+                               &stats) == Status::ok);
         INFO("points past the gap: " << c.after.size() << ", expected end " << c.end_x);
         REQUIRE(count == 1);
         const double right = std::max(out[0].x1.raw, out[0].x2.raw) / 65536.0;
@@ -230,7 +236,8 @@ TEST_CASE("a segment's end: a run after a gap of g pixels counts once it has g p
     }
 }
 
-TEST_CASE("a full segment list keeps the longest segments, whatever the visiting order", "[hough]") {
+TEST_CASE("a full segment list keeps the longest segments, whatever the visiting order",
+          "[hough]") {
     // Eight bright bars 10 px tall and 30, 40, ..., 100 px wide: their top and bottom sides
     // are 16 segments (the 10-px ends are below min_line_length). With room for 4, the 4 kept
     // are the sides of the two widest bars, for any PPHT seed.
@@ -255,7 +262,8 @@ TEST_CASE("a full segment list keeps the longest segments, whatever the visiting
         CHECK(small.stats().hough.segments_dropped >= 12);
         for (uint16_t i = 0; i < 4; ++i) {
             const Segment& s = small.segments()[i];
-            const double len = std::hypot((s.x2.raw - s.x1.raw) / 65536.0, (s.y2.raw - s.y1.raw) / 65536.0);
+            const double len =
+                std::hypot((s.x2.raw - s.x1.raw) / 65536.0, (s.y2.raw - s.y1.raw) / 65536.0);
             INFO("seed " << seed << " segment " << i << " length " << len);
             CHECK(len > 85);  // of the 90- and 100-px bars (ends stop a pixel or two short)
         }

@@ -21,7 +21,8 @@ scene::MatchResult score(const scene::LineScene& s) {
     std::vector<scene::DetectedLine> d;
     for (uint16_t i = 0; i < g_det.line_count(); ++i) {
         const Segment& l = g_det.lines()[i];
-        d.push_back({{l.x1.raw / 65536.0, l.y1.raw / 65536.0}, {l.x2.raw / 65536.0, l.y2.raw / 65536.0}});
+        d.push_back(
+            {{l.x1.raw / 65536.0, l.y1.raw / 65536.0}, {l.x2.raw / 65536.0, l.y2.raw / 65536.0}});
     }
     scene::MatchRule rule;
     rule.min_length = 2.0 * LineParams{}.hough.min_line_length;
@@ -73,10 +74,17 @@ TEST_CASE("scenes that once lost a side keep every side", "[accuracy]") {
         const char* why;
     };
     const Case cases[] = {
-        {849, 5, 60, "clustering: sides of two shapes 1 deg apart, 4.5 px beside each other across a 12 px gap, merged (on one line)"},
-        {122, 5, 0, "clustering: sides of two shapes 3 deg apart, 8 px beside each other across a 14 px gap, merged (on one line)"},
-        {24, 5, 60, "PPHT: a seed bin 18 deg off; way 0 left the line before any refit (walked again)"},
-        {898, 0, 60, "PPHT: a clean 42 deg staircase; the nearer of two points per column biased the fit (all fitted)"},
+        {849, 5, 60,
+         "clustering: sides of two shapes 1 deg apart, 4.5 px beside each other across a 12 px "
+         "gap, merged (on one line)"},
+        {122, 5, 0,
+         "clustering: sides of two shapes 3 deg apart, 8 px beside each other across a 14 px gap, "
+         "merged (on one line)"},
+        {24, 5, 60,
+         "PPHT: a seed bin 18 deg off; way 0 left the line before any refit (walked again)"},
+        {898, 0, 60,
+         "PPHT: a clean 42 deg staircase; the nearer of two points per column biased the fit (all "
+         "fitted)"},
         {20, 5, 60, "PPHT: one noise pixel 4 px past a corner carried the end (runs after gaps)"},
         {167, 5, 60, "PPHT: two noise pixels 3 px past a corner carried the end (runs after gaps)"},
     };
@@ -93,7 +101,8 @@ TEST_CASE("scenes that once lost a side keep every side", "[accuracy]") {
 TEST_CASE("drawn 2-px lines at noise 5: both sides merge into the centre line", "[accuracy]") {
     Totals t;
     constexpr int kScenes = 50;
-    for (int i = 0; i < kScenes; ++i) t.add(score(scene::random_line_scene(noisy(2000 + i), 4, 40, 150)));
+    for (int i = 0; i < kScenes; ++i)
+        t.add(score(scene::random_line_scene(noisy(2000 + i), 4, 40, 150)));
     INFO("found " << t.found << " of " << t.scored << ", false positives " << t.false_positives);
     REQUIRE(t.scored == 4 * kScenes);
     REQUIRE(t.found >= t.scored * 90 / 100);

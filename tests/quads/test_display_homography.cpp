@@ -6,8 +6,8 @@
 #include <cmath>
 #include <utility>
 
-#include "quads/display_homography.h"
 #include "base/prng.h"
+#include "quads/display_homography.h"
 #include "support/segment_reference.h"
 
 using namespace qt;
@@ -57,10 +57,13 @@ P apply(const std::array<double, 9>& h, double u, double v) {
 
 }  // namespace
 
-TEST_CASE("display homography of an axis-aligned rectangle is a scale and a shift", "[homography]") {
+TEST_CASE("display homography of an axis-aligned rectangle is a scale and a shift",
+          "[homography]") {
     // Display 100 × 50 onto the rectangle (10, 20) – (210, 120): x = 2u + 10, y = 2v + 20.
-    const Point16 corners[4] = {{to_q16(10), to_q16(20)}, {to_q16(10), to_q16(120)},
-                                {to_q16(210), to_q16(120)}, {to_q16(210), to_q16(20)}};
+    const Point16 corners[4] = {{to_q16(10), to_q16(20)},
+                                {to_q16(10), to_q16(120)},
+                                {to_q16(210), to_q16(120)},
+                                {to_q16(210), to_q16(20)}};
     DisplayHomography h;
     REQUIRE(display_homography(corners, 100, 50, h));
     CHECK(h.a == q12_20::from_int(2));
@@ -77,7 +80,8 @@ TEST_CASE("display homography of an axis-aligned rectangle is a scale and a shif
     CHECK(p.y == q16_16::from_int(100));
 }
 
-TEST_CASE("display homography agrees with a double-precision DLT on perspective boards", "[homography]") {
+TEST_CASE("display homography agrees with a double-precision DLT on perspective boards",
+          "[homography]") {
     Pcg32 rng(11, 3);
     auto u = [&](double lo, double hi) { return lo + (hi - lo) * (rng.next() / 4294967296.0); };
     double worst = 0;
@@ -113,14 +117,20 @@ TEST_CASE("display homography agrees with a double-precision DLT on perspective 
 }
 
 TEST_CASE("display homography refuses what it cannot represent", "[homography]") {
-    const Point16 ok[4] = {{to_q16(10), to_q16(10)}, {to_q16(10), to_q16(90)}, {to_q16(110), to_q16(90)},
+    const Point16 ok[4] = {{to_q16(10), to_q16(10)},
+                           {to_q16(10), to_q16(90)},
+                           {to_q16(110), to_q16(90)},
                            {to_q16(110), to_q16(10)}};
     DisplayHomography h;
     CHECK_FALSE(display_homography(ok, 0, 768, h));
-    const Point16 far[4] = {{to_q16(10), to_q16(10)}, {to_q16(10), to_q16(90)}, {to_q16(3000), to_q16(90)},
+    const Point16 far[4] = {{to_q16(10), to_q16(10)},
+                            {to_q16(10), to_q16(90)},
+                            {to_q16(3000), to_q16(90)},
                             {to_q16(110), to_q16(10)}};
     CHECK_FALSE(display_homography(far, 1024, 768, h));
-    const Point16 collinear[4] = {{to_q16(10), to_q16(10)}, {to_q16(20), to_q16(20)}, {to_q16(30), to_q16(30)},
+    const Point16 collinear[4] = {{to_q16(10), to_q16(10)},
+                                  {to_q16(20), to_q16(20)},
+                                  {to_q16(30), to_q16(30)},
                                   {to_q16(40), to_q16(40)}};
     CHECK_FALSE(display_homography(collinear, 1024, 768, h));
     REQUIRE(display_homography(ok, 1024, 768, h));

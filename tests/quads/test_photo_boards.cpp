@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "quads/board_detector.h"
 #include "io/image_io.h"
+#include "io/push_frame.h"
+#include "quads/board_detector.h"
 #include "scene/line_scene.h"
 #include "scene/photo_board_scene.h"
-#include "io/push_frame.h"
 #include "scene/random.h"
 
 using namespace qt;
@@ -25,7 +25,8 @@ BoardDetectorVga g_vga;
 
 // Worst corner error of the best quadrangle against the truth, px (1e9 when none).
 template <class Detector>
-double worst_corner(Detector& det, const io::GreyImage& img, const scene::Point2 truth[4], double* sq = nullptr) {
+double worst_corner(Detector& det, const io::GreyImage& img, const scene::Point2 truth[4],
+                    double* sq = nullptr) {
     const Status s = io::push_frame(det, img, BoardParams{});
     REQUIRE((s == Status::ok || s == Status::capacity_exceeded));
     if (det.quad_count() == 0) return 1e9;
@@ -42,7 +43,8 @@ double worst_corner(Detector& det, const io::GreyImage& img, const scene::Point2
 const std::vector<io::NamedImage>& photos() {
     static std::vector<io::NamedImage> loaded;
     static std::string error;
-    if (loaded.empty() && error.empty() && !io::read_image_folder(QT_PHOTO_DIR, loaded, error) && error.empty())
+    if (loaded.empty() && error.empty() && !io::read_image_folder(QT_PHOTO_DIR, loaded, error) &&
+        error.empty())
         error = "no photographs";
     INFO(error << (std::string(QT_PHOTOS_MISSING).empty() ? "" : "; missing: " QT_PHOTOS_MISSING));
     REQUIRE(std::string(QT_PHOTOS_MISSING).empty());
@@ -56,7 +58,8 @@ struct Tally {
 };
 
 template <class Detector>
-Tally run_set(Detector& det, int width, int height, bool board, bool occlude, uint64_t seed0, int scenes) {
+Tally run_set(Detector& det, int width, int height, bool board, bool occlude, uint64_t seed0,
+              int scenes) {
     Tally t;
     for (int k = 0; k < scenes; ++k) {
         scene::PhotoBoardOptions o;
@@ -65,7 +68,8 @@ Tally run_set(Detector& det, int width, int height, bool board, bool occlude, ui
         o.board = board;
         o.occlude = occlude;
         const auto& photo = photos()[static_cast<size_t>(k) % photos().size()].image;
-        const scene::PhotoBoardScene s = scene::make_photo_board_scene(o, photo, seed0 + static_cast<uint64_t>(k));
+        const scene::PhotoBoardScene s =
+            scene::make_photo_board_scene(o, photo, seed0 + static_cast<uint64_t>(k));
         double sq = 0;
         const double worst = worst_corner(det, s.image, s.corners, &sq);
         ++t.scenes;
@@ -81,7 +85,8 @@ Tally run_set(Detector& det, int width, int height, bool board, bool occlude, ui
 
 }  // namespace
 
-TEST_CASE("clutter that fills every capacity does not cost the most salient board", "[photo_boards]") {
+TEST_CASE("clutter that fills every capacity does not cost the most salient board",
+          "[photo_boards]") {
     // 400 bars 22–45 px long of grey 70–130 on grey 40 fill the edge list and the segment list
     // many times over; the board (grey 230) lies in the bottom half, whose edges and lines
     // come last in raster and PPHT order.
@@ -93,9 +98,11 @@ TEST_CASE("clutter that fills every capacity does not cost the most salient boar
     Pcg32 rng(77);
     for (int k = 0; k < 400; ++k) {
         const double x = scene::uniform(rng, -20, 340), y = scene::uniform(rng, -20, 260);
-        const double len = scene::uniform(rng, 22, 45), t = scene::uniform(rng, 0, 6.283185307179586);
+        const double len = scene::uniform(rng, 22, 45),
+                     t = scene::uniform(rng, 0, 6.283185307179586);
         const scene::Point2 a{x, y}, b{x + len * std::cos(t), y + len * std::sin(t)};
-        ls.add_line(a, b, scene::uniform(rng, 2, 4), static_cast<uint8_t>(scene::uniform_int(rng, 70, 130)));
+        ls.add_line(a, b, scene::uniform(rng, 2, 4),
+                    static_cast<uint8_t>(scene::uniform_int(rng, 70, 130)));
     }
     const scene::Point2 board[4] = {{90.4, 120.6}, {98.1, 226.2}, {240.7, 219.5}, {231.2, 115.3}};
     ls.add_polygon({board, board + 4}, 230);
@@ -109,7 +116,8 @@ TEST_CASE("clutter that fills every capacity does not cost the most salient boar
     CHECK(s.cluster.clusters_dropped > 0);       // and the line list
 }
 
-TEST_CASE("boards on real photographs: found with sub-pixel corners, false detections rare", "[photo_boards]") {
+TEST_CASE("boards on real photographs: found with sub-pixel corners, false detections rare",
+          "[photo_boards]") {
     // Regression guards at the measured level (bash bench.sh photos-host gives the full
     // figures and says where the aims are not met).
     const Tally u = run_set(g_qvga, 320, 240, true, false, 7000000, 48);

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <vector>
 
+#include "io/push_frame.h"
+#include "lines/line_fit.h"
 #include "quads/board_detector.h"
 #include "scene/board_pose.h"
-#include "lines/line_fit.h"
 #include "scene/line_scene.h"
-#include "io/push_frame.h"
 
 using namespace qt;
 
@@ -40,7 +40,8 @@ q16_16 q(double v) { return q16_16::from_raw(static_cast<int32_t>(std::lround(v 
 
 // The line through a and b moved `shift` px along its normal and turned `turn_deg` about its
 // middle, with the board (brighter) on the side of `inside`.
-Segment line_near(scene::Point2 a, scene::Point2 b, double shift, double turn_deg, scene::Point2 inside) {
+Segment line_near(scene::Point2 a, scene::Point2 b, double shift, double turn_deg,
+                  scene::Point2 inside) {
     const double mx = (a.x + b.x) / 2, my = (a.y + b.y) / 2, len = std::hypot(b.x - a.x, b.y - a.y);
     const double t = std::atan2(b.y - a.y, b.x - a.x) + turn_deg * 3.14159265358979323846 / 180;
     double dx = std::cos(t), dy = std::sin(t);
@@ -61,7 +62,8 @@ LineDetectorQvga g_lines;
 
 }  // namespace
 
-TEST_CASE("refined sides put the corners on the true corners from lines a few pixels off", "[refine]") {
+TEST_CASE("refined sides put the corners on the true corners from lines a few pixels off",
+          "[refine]") {
     const io::GreyImage img = board_frame();
     REQUIRE(io::push_frame(g_lines, img, LineParams{}) == Status::ok);
     const scene::Point2 centre{155, 110};
@@ -69,7 +71,8 @@ TEST_CASE("refined sides put the corners on the true corners from lines a few pi
     Segment start[4];
     const Segment* side_lines[4];
     for (int i = 0; i < 4; ++i) {
-        start[i] = line_near(kCorners[i], kCorners[(i + 1) % 4], i % 2 ? 1.5 : -1.5, i % 2 ? 1.0 : -1.0, centre);
+        start[i] = line_near(kCorners[i], kCorners[(i + 1) % 4], i % 2 ? 1.5 : -1.5,
+                             i % 2 ? 1.0 : -1.0, centre);
         side_lines[i] = &start[i];
     }
     Quad quad{};
@@ -85,7 +88,8 @@ TEST_CASE("refined sides put the corners on the true corners from lines a few pi
 
     Segment sides[4];
     SideEvidence evidence{};
-    REQUIRE(refine_quad(g_lines.edges(), side_lines, RefineParams{}, quad, sides, &evidence) == 0xF);
+    REQUIRE(refine_quad(g_lines.edges(), side_lines, RefineParams{}, quad, sides, &evidence) ==
+            0xF);
     for (int i = 0; i < 4; ++i) {
         const double e = std::hypot(quad.corners[i].x.raw / 65536.0 - kCorners[i].x,
                                     quad.corners[i].y.raw / 65536.0 - kCorners[i].y);
@@ -100,7 +104,8 @@ TEST_CASE("refined sides put the corners on the true corners from lines a few pi
     CHECK(share.raw > 58982);  // > 0.9
 }
 
-TEST_CASE("a side without edges keeps its line and the evidence turns the quadrangle down", "[refine]") {
+TEST_CASE("a side without edges keeps its line and the evidence turns the quadrangle down",
+          "[refine]") {
     const io::GreyImage img = board_frame(220);  // right of the board as bright as the board
     REQUIRE(io::push_frame(g_lines, img, LineParams{}) == Status::ok);
     Segment start[4];
@@ -110,17 +115,20 @@ TEST_CASE("a side without edges keeps its line and the evidence turns the quadra
         start[i] = line_near(kCorners[i], kCorners[(i + 1) % 4], 0, 0, {155, 110});
         side_lines[i] = &start[i];
     }
-    for (int i = 0; i < 4; ++i) REQUIRE(intersect_lines(start[(i + 3) % 4], start[i], quad.corners[i]));
+    for (int i = 0; i < 4; ++i)
+        REQUIRE(intersect_lines(start[(i + 3) % 4], start[i], quad.corners[i]));
     Segment sides[4];
     SideEvidence evidence{};
-    const uint8_t refitted = refine_quad(g_lines.edges(), side_lines, RefineParams{}, quad, sides, &evidence);
+    const uint8_t refitted =
+        refine_quad(g_lines.edges(), side_lines, RefineParams{}, quad, sides, &evidence);
     CHECK((refitted & 4u) == 0);  // side 2, bottom-right -> top-right: no edge there
     CHECK(refitted == 0xB);
     CHECK(evidence.held[2] * 10 < evidence.steps[2]);
     CHECK(sides[2].rho == start[2].rho);
     q16_16 share;
     CHECK_FALSE(verify_evidence(evidence, 0, RefineParams{}, &share));
-    CHECK_FALSE(verify_evidence(evidence, 4, RefineParams{}, &share));  // not even as a completed side
+    CHECK_FALSE(
+        verify_evidence(evidence, 4, RefineParams{}, &share));  // not even as a completed side
 }
 
 TEST_CASE("edge evidence rule: each side, the hidden one, both ends, the whole", "[refine]") {
@@ -165,7 +173,8 @@ TEST_CASE("completion: a board whose side is hidden but for its two ends is foun
     const double a = 0.2, b = 0.8;  // the covered part of the bottom side
     const scene::Point2 p{c[1].x + a * (c[2].x - c[1].x), c[1].y + a * (c[2].y - c[1].y)};
     const scene::Point2 r{c[1].x + b * (c[2].x - c[1].x), c[1].y + b * (c[2].y - c[1].y)};
-    // The arm: from below the frame, a rounded tip 20 px inside the side (platform/scene/board_pose.h).
+    // The arm: from below the frame, a rounded tip 20 px inside the side
+    // (platform/scene/board_pose.h).
     const double len = std::hypot(c[2].x - c[1].x, c[2].y - c[1].y);
     const double nx = (c[2].y - c[1].y) / len, ny = -(c[2].x - c[1].x) / len;  // inward normal
     const std::vector<scene::Point2> tip = scene::arm_tip(p, r, -nx, -ny, 1, (b - a) * len, 20);

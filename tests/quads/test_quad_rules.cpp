@@ -25,15 +25,16 @@ struct Found {
     QuadStats stats;
 };
 
-Found find(const std::vector<Segment>& lines, uint16_t w, uint16_t h, const QuadParams& p = QuadParams{},
-           uint16_t pair_capacity = 64, uint16_t capacity = 4) {
+Found find(const std::vector<Segment>& lines, uint16_t w, uint16_t h,
+           const QuadParams& p = QuadParams{}, uint16_t pair_capacity = 64, uint16_t capacity = 4) {
     std::vector<LinePair> pairs(pair_capacity);
     std::vector<SinCos> normals(lines.size() + 1);
     std::vector<Quad> out(capacity);
     uint16_t count = 0;
     Found f;
-    f.status = detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), w, h, p, pairs.data(),
-                            pair_capacity, normals.data(), out.data(), capacity, &count, &f.stats);
+    f.status =
+        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), w, h, p, pairs.data(),
+                     pair_capacity, normals.data(), out.data(), capacity, &count, &f.stats);
     f.quads.assign(out.begin(), out.begin() + count);
     return f;
 }
@@ -49,7 +50,8 @@ std::vector<Segment> sides_of(Point16 a, Point16 b, Point16 c, Point16 d) {
 }
 
 void require_corner(const Point16& c, double x, double y, double tol = 1e-3) {
-    INFO("corner (" << from_q16(c.x) << ", " << from_q16(c.y) << ") expected (" << x << ", " << y << ")");
+    INFO("corner (" << from_q16(c.x) << ", " << from_q16(c.y) << ") expected (" << x << ", " << y
+                    << ")");
     REQUIRE(std::fabs(from_q16(c.x) - x) <= tol);
     REQUIRE(std::fabs(from_q16(c.y) - y) <= tol);
 }
@@ -71,9 +73,9 @@ TEST_CASE("rule 2: adjacent sides almost perpendicular", "[quad]") {
     QuadParams p;
     p.perpendicular_tolerance = angle_from_deg(20);
     CHECK(rule_perpendicular(angle_deg(0), angle_deg(90), p));
-    CHECK(rule_perpendicular(angle_deg(0), angle_deg(71), p));   // 19° off
-    CHECK_FALSE(rule_perpendicular(angle_deg(0), angle_deg(69), p));  // 21° off
-    CHECK(rule_perpendicular(angle_deg(350), angle_deg(265), p));  // 85° apart
+    CHECK(rule_perpendicular(angle_deg(0), angle_deg(71), p));          // 19° off
+    CHECK_FALSE(rule_perpendicular(angle_deg(0), angle_deg(69), p));    // 21° off
+    CHECK(rule_perpendicular(angle_deg(350), angle_deg(265), p));       // 85° apart
     CHECK_FALSE(rule_perpendicular(angle_deg(10), angle_deg(190), p));  // the same line
 }
 
@@ -96,11 +98,14 @@ TEST_CASE("rule 4: side lengths between the limits", "[quad]") {
     QuadParams p;
     p.min_side_length = q16_16::from_int(20);
     p.max_side_length = q16_16::from_int(100);
-    const q16_16 ok[4] = {q16_16::from_int(20), q16_16::from_int(100), q16_16::from_int(50), q16_16::from_int(60)};
+    const q16_16 ok[4] = {q16_16::from_int(20), q16_16::from_int(100), q16_16::from_int(50),
+                          q16_16::from_int(60)};
     CHECK(rule_side_lengths(ok, p));
-    const q16_16 short_side[4] = {q16_16::from_int(50), to_q16(19.99), q16_16::from_int(50), q16_16::from_int(60)};
+    const q16_16 short_side[4] = {q16_16::from_int(50), to_q16(19.99), q16_16::from_int(50),
+                                  q16_16::from_int(60)};
     CHECK_FALSE(rule_side_lengths(short_side, p));
-    const q16_16 long_side[4] = {q16_16::from_int(50), q16_16::from_int(50), to_q16(100.01), q16_16::from_int(60)};
+    const q16_16 long_side[4] = {q16_16::from_int(50), q16_16::from_int(50), to_q16(100.01),
+                                 q16_16::from_int(60)};
     CHECK_FALSE(rule_side_lengths(long_side, p));
 }
 
@@ -109,14 +114,14 @@ TEST_CASE("rule 5: adjacent-side ratio close to the display's", "[quad]") {
     auto sides = [](double left, double bottom, double right, double top) {
         return std::vector<q16_16>{to_q16(left), to_q16(bottom), to_q16(right), to_q16(top)};
     };
-    CHECK(rule_aspect(sides(60, 80, 60, 80).data(), p));    // exactly 4:3
-    CHECK(rule_aspect(sides(100, 75, 100, 75).data(), p));  // 0.75
+    CHECK(rule_aspect(sides(60, 80, 60, 80).data(), p));          // exactly 4:3
+    CHECK(rule_aspect(sides(100, 75, 100, 75).data(), p));        // 0.75
     CHECK_FALSE(rule_aspect(sides(100, 73, 100, 73).data(), p));  // 0.73
-    CHECK(rule_aspect(sides(50, 119, 50, 119).data(), p));  // 2.38
+    CHECK(rule_aspect(sides(50, 119, 50, 119).data(), p));        // 2.38
     CHECK_FALSE(rule_aspect(sides(50, 121, 50, 121).data(), p));  // 2.42
     // Means of opposite sides: (70 + 90) / (50 + 70) = 4/3 though no single pair is.
     CHECK(rule_aspect(sides(50, 70, 70, 90).data(), p));
-    p.aspect_tolerance = q16_16::from_ratio(11, 10);  // [1.2121, 1.4667]
+    p.aspect_tolerance = q16_16::from_ratio(11, 10);            // [1.2121, 1.4667]
     CHECK_FALSE(rule_aspect(sides(50, 60, 50, 60).data(), p));  // 1.2
     CHECK(rule_aspect(sides(50, 61, 50, 61).data(), p));        // 1.22
 }
@@ -135,10 +140,10 @@ TEST_CASE("line intersections agree with double precision", "[quad]") {
         const double x = u(-50, 700), y = u(-50, 500);  // the crossing
         const double a1 = u(0, 2 * ref::kPi), a2 = a1 + u(0.3, 2.8);
         const double l1 = u(20, 200), l2 = u(20, 200);
-        const Segment s1 = segment(x - l1 * std::cos(a1), y - l1 * std::sin(a1), x + 0.5 * l1 * std::cos(a1),
-                                   y + 0.5 * l1 * std::sin(a1));
-        const Segment s2 = segment(x + 5 * std::cos(a2), y + 5 * std::sin(a2), x + l2 * std::cos(a2),
-                                   y + l2 * std::sin(a2));
+        const Segment s1 = segment(x - l1 * std::cos(a1), y - l1 * std::sin(a1),
+                                   x + 0.5 * l1 * std::cos(a1), y + 0.5 * l1 * std::sin(a1));
+        const Segment s2 = segment(x + 5 * std::cos(a2), y + 5 * std::sin(a2),
+                                   x + l2 * std::cos(a2), y + l2 * std::sin(a2));
         REQUIRE(intersect_lines(s1, s2, c));
         worst = std::fmax(worst, std::hypot(from_q16(c.x) - x, from_q16(c.y) - y));
     }
@@ -146,9 +151,11 @@ TEST_CASE("line intersections agree with double precision", "[quad]") {
     CHECK(worst < 0.01);
 }
 
-TEST_CASE("a rectangle's four lines give one quadrangle, corners anti-clockwise as seen", "[quad]") {
+TEST_CASE("a rectangle's four lines give one quadrangle, corners anti-clockwise as seen",
+          "[quad]") {
     // Lines in a scrambled order, plus one line parallel to nothing useful.
-    const auto s = sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));  // top, right, bottom, left
+    const auto s =
+        sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));  // top, right, bottom, left
     std::vector<Segment> lines = {s[2], s[0], segment(200, 30, 260, 150), s[3], s[1]};
     const Found f = find(lines, 320, 240);
     REQUIRE(f.status == Status::ok);
@@ -176,7 +183,8 @@ TEST_CASE("a board turned 25° and seen in perspective keeps the corner order", 
         v[i] = pt(160 + raw[i][0] * c - raw[i][1] * s, 120 + raw[i][0] * s + raw[i][1] * c);
     const Found f = find(sides_of(v[0], v[1], v[2], v[3]), 320, 240);
     REQUIRE(f.quads.size() == 1);
-    for (int i = 0; i < 4; ++i) require_corner(f.quads[0].corners[i], from_q16(v[i].x), from_q16(v[i].y), 0.01);
+    for (int i = 0; i < 4; ++i)
+        require_corner(f.quads[0].corners[i], from_q16(v[i].x), from_q16(v[i].y), 0.01);
 }
 
 TEST_CASE("each rule turns down a candidate that breaks it", "[quad]") {
@@ -184,12 +192,14 @@ TEST_CASE("each rule turns down a candidate that breaks it", "[quad]") {
         QuadParams p;
         p.parallel_tolerance = angle_from_deg(10);
         // Left side vertical, right side leaning 20°: no parallel pair for them.
-        const Found f = find(sides_of(pt(50, 50), pt(50, 150), pt(200, 150), pt(164, 50)), 320, 240, p);
+        const Found f =
+            find(sides_of(pt(50, 50), pt(50, 150), pt(200, 150), pt(164, 50)), 320, 240, p);
         CHECK(f.quads.empty());
         CHECK(f.stats.parallel_pairs == 1);  // only top and bottom
     }
     SECTION("rule 2: a parallelogram sheared 45°") {
-        const Found f = find(sides_of(pt(50, 50), pt(150, 150), pt(300, 150), pt(200, 50)), 320, 240);
+        const Found f =
+            find(sides_of(pt(50, 50), pt(150, 150), pt(300, 150), pt(200, 50)), 320, 240);
         CHECK(f.quads.empty());
         CHECK(f.stats.rejected_perpendicular == 1);
     }
@@ -205,12 +215,14 @@ TEST_CASE("each rule turns down a candidate that breaks it", "[quad]") {
         QuadParams p;
         p.min_side_length = q16_16::from_int(40);
         // 100 × 30: the pair 30 px apart passes the 20 px separation prefilter, rule 4 fails.
-        const Found f = find(sides_of(pt(50, 50), pt(50, 80), pt(150, 80), pt(150, 50)), 320, 240, p);
+        const Found f =
+            find(sides_of(pt(50, 50), pt(50, 80), pt(150, 80), pt(150, 50)), 320, 240, p);
         CHECK(f.quads.empty());
         CHECK(f.stats.rejected_sides == 1);
     }
     SECTION("rule 5: a 3:1 strip against a 4:3 display") {
-        const Found f = find(sides_of(pt(20, 50), pt(20, 110), pt(200, 110), pt(200, 50)), 320, 240);
+        const Found f =
+            find(sides_of(pt(20, 50), pt(20, 110), pt(200, 110), pt(200, 50)), 320, 240);
         CHECK(f.quads.empty());
         CHECK(f.stats.rejected_aspect == 1);
     }
@@ -238,7 +250,8 @@ TEST_CASE("candidates are ranked by support and a full pair list says so", "[qua
     // (420 − 60) / 420 of the left board's perimeter is covered.
     bool left_found = false;
     for (const Quad& q : f.quads) {
-        if (std::fabs(from_q16(q.corners[0].x) - 20) > 1e-3 || std::fabs(from_q16(q.corners[0].y) - 50) > 1e-3 ||
+        if (std::fabs(from_q16(q.corners[0].x) - 20) > 1e-3 ||
+            std::fabs(from_q16(q.corners[0].y) - 50) > 1e-3 ||
             std::fabs(from_q16(q.corners[2].x) - 140) > 1e-3)
             continue;  // e.g. the left board's top and bottom with the right board's left side
         left_found = true;
@@ -263,14 +276,16 @@ TEST_CASE("degenerate line sets give no quadrangle and no error", "[quad]") {
     Quad out[1];
     uint16_t count = 7;
     QuadStats stats;
-    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, normals, out, 1, &count, &stats) == Status::bad_size);
+    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, normals, out, 1, &count,
+                       &stats) == Status::bad_size);
     CHECK(count == 0);
 }
 
 TEST_CASE("contrast: the board's inside is on every side's bright side", "[quad]") {
     // Rectangle (10, 10) – (110, 85). Normals (segment_reference.h): top θ 90° and left θ 0°
     // point into the board, right θ 0° and bottom θ 90° point out of it.
-    auto lines = sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));  // top, right, bottom, left
+    auto lines =
+        sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));  // top, right, bottom, left
     const int8_t inward[4] = {+1, -1, -1, +1};
     for (int i = 0; i < 4; ++i) lines[i].bright_side = inward[i];
     CHECK(find(lines, 320, 240).quads.size() == 1);

@@ -1,13 +1,13 @@
-// Corner accuracy of the whole detection chain against the ground truth of generated board
-// scenes (platform/scene/board_bench_scene.h), on seeds the defaults were not tuned on (the bench uses
+// Corner accuracy of the whole detection chain against the ground truth of generated board scenes
+// (platform/scene/board_bench_scene.h), on seeds the defaults were not tuned on (the bench uses
 // 1000000+). The full-size table with the OpenCV baseline is `bash bench.sh quads-host`.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "scene/board_bench_scene.h"
-#include "quads/board_detector.h"
 #include "io/push_frame.h"
+#include "quads/board_detector.h"
+#include "scene/board_bench_scene.h"
 
 using namespace qt;
 
@@ -28,12 +28,14 @@ TEST_CASE("boards under perspective: found, corners within half a pixel RMS", "[
     int found = 0, corners = 0;
     double sum_sq = 0, worst = 0;
     for (int k = 0; k < kScenes; ++k) {
-        const scene::BoardBenchScene s = scene::make_board_bench_scene(scene::BoardBenchOptions{}, 5000u + k);
+        const scene::BoardBenchScene s =
+            scene::make_board_bench_scene(scene::BoardBenchOptions{}, 5000u + k);
         if (detect(s.image) == 0) continue;
         double scene_worst = 0, scene_sq = 0;
         for (int i = 0; i < 4; ++i) {
             const Point16 c = g_det.quads()[0].corners[i];
-            const double e = std::hypot(c.x.raw / 65536.0 - s.corners[i].x, c.y.raw / 65536.0 - s.corners[i].y);
+            const double e =
+                std::hypot(c.x.raw / 65536.0 - s.corners[i].x, c.y.raw / 65536.0 - s.corners[i].y);
             scene_worst = std::fmax(scene_worst, e);
             scene_sq += e * e;
         }

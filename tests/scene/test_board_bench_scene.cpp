@@ -12,9 +12,9 @@
 #include "scene/board_bench_scene.h"
 #include "scene/line_scene.h"
 
+using qt::io::GreyImage;
 using qt::scene::BoardBenchOptions;
 using qt::scene::BoardBenchScene;
-using qt::io::GreyImage;
 using qt::scene::make_board_bench_scene;
 using qt::scene::Point2;
 
@@ -60,14 +60,16 @@ double board_distance(const BoardBenchScene& s, Point2 q) {
     double inside = 1e300;
     for (int i = 0; i < 4; ++i) {
         const Point2 a = s.corners[i], b = s.corners[(i + 1) % 4];
-        inside = std::min(inside, ((b.y - a.y) * (q.x - a.x) - (b.x - a.x) * (q.y - a.y)) / dist(a, b));
+        inside =
+            std::min(inside, ((b.y - a.y) * (q.x - a.x) - (b.x - a.x) * (q.y - a.y)) / dist(a, b));
     }
     if (inside >= 0) return inside;
     double out = 1e300;  // outside: distance to the nearest side segment
     for (int i = 0; i < 4; ++i) {
         const Point2 a = s.corners[i], b = s.corners[(i + 1) % 4];
         const double dx = b.x - a.x, dy = b.y - a.y;
-        const double t = std::min(1.0, std::max(0.0, ((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy)));
+        const double t = std::min(
+            1.0, std::max(0.0, ((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy)));
         out = std::min(out, std::hypot(a.x + t * dx - q.x, a.y + t * dy - q.y));
     }
     return -out;
@@ -76,19 +78,24 @@ double board_distance(const BoardBenchScene& s, Point2 q) {
 struct H3 {
     double x, y, z;
 };
-H3 hcross(H3 a, H3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+H3 hcross(H3 a, H3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 
 // Tilt from the image alone: the vanishing points of the two pairs of opposite sides,
 // back-projected with the focal length and the principal point at the frame centre, are the
 // board's two axis directions; their cross product is its normal; the tilt is the normal's
 // angle from the optical axis, degrees.
 double tilt_from_vanishing_points(const BoardBenchScene& s, int w, int h) {
-    const H3 c[4] = {{s.corners[0].x, s.corners[0].y, 1}, {s.corners[1].x, s.corners[1].y, 1},
-                     {s.corners[2].x, s.corners[2].y, 1}, {s.corners[3].x, s.corners[3].y, 1}};
+    const H3 c[4] = {{s.corners[0].x, s.corners[0].y, 1},
+                     {s.corners[1].x, s.corners[1].y, 1},
+                     {s.corners[2].x, s.corners[2].y, 1},
+                     {s.corners[3].x, s.corners[3].y, 1}};
     const H3 v1 = hcross(hcross(c[0], c[3]), hcross(c[1], c[2]));  // top and bottom sides
     const H3 v2 = hcross(hcross(c[0], c[1]), hcross(c[3], c[2]));  // left and right sides
     const double cx = (w - 1) / 2.0, cy = (h - 1) / 2.0, f = s.focal_px;
-    const H3 d1{v1.x - cx * v1.z, v1.y - cy * v1.z, f * v1.z}, d2{v2.x - cx * v2.z, v2.y - cy * v2.z, f * v2.z};
+    const H3 d1{v1.x - cx * v1.z, v1.y - cy * v1.z, f * v1.z},
+        d2{v2.x - cx * v2.z, v2.y - cy * v2.z, f * v2.z};
     const H3 n = hcross(d1, d2);
     return std::atan2(std::hypot(n.x, n.y), std::fabs(n.z)) * 180 / kPi;
 }
@@ -117,7 +124,8 @@ TEST_CASE("board bench: corners anti-clockwise as seen, inside the margin, at th
             REQUIRE(s.image.height == 240);
             CHECK(shoelace(s.corners) < 0);
             for (int i = 0; i < 4; ++i) {  // convex: every turn anti-clockwise as seen
-                const Point2 a = s.corners[i], b = s.corners[(i + 1) % 4], c = s.corners[(i + 2) % 4];
+                const Point2 a = s.corners[i], b = s.corners[(i + 1) % 4],
+                             c = s.corners[(i + 2) % 4];
                 CHECK((b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x) < 0);
                 CHECK(s.corners[i].x >= 4);
                 CHECK(s.corners[i].x <= 320 - 5);
@@ -133,7 +141,8 @@ TEST_CASE("board bench: corners anti-clockwise as seen, inside the margin, at th
             // Scale: the bounding box spans `scale` of the frame in its tighter direction.
             double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
             for (const Point2& p : s.corners) {
-                x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+                x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
+                y1 = std::max(y1, p.y);
             }
             CHECK(std::max((x1 - x0) / 320, (y1 - y0) / 240) == Approx(s.scale).margin(1e-9));
         }
@@ -148,7 +157,10 @@ TEST_CASE("board bench: tilt 0, rotation 0 gives an axis-aligned rectangle of th
     // 320×240 frame. 4:3 at scale 0.5: 160 × 120 (both ratios 0.5). 16:9 at 0.6: the width
     // governs, 0.6·320 = 192 px wide, 192·9/16 = 108 high. 1:1 at 0.5: the height governs,
     // 0.5·240 = 120 both ways. 1:2 at 0.8: 0.8·240 = 192 high, 96 wide.
-    const Case cases[] = {{4.0 / 3, 0.5, 160, 120}, {16.0 / 9, 0.6, 192, 108}, {1, 0.5, 120, 120}, {0.5, 0.8, 96, 192}};
+    const Case cases[] = {{4.0 / 3, 0.5, 160, 120},
+                          {16.0 / 9, 0.6, 192, 108},
+                          {1, 0.5, 120, 120},
+                          {0.5, 0.8, 96, 192}};
     for (const Case& c : cases) {
         for (uint64_t seed = 1; seed <= 10; ++seed) {
             INFO("aspect " << c.aspect << " seed " << seed);
@@ -179,7 +191,8 @@ TEST_CASE("board bench: rotation ±30° at tilt 0 turns the sides by 30° clockw
             INFO("rotation " << sign * 30 << " seed " << seed);
             const BoardBenchScene s = make_board_bench_scene(pinned(0, sign * 30, 0.5), seed);
             const Point2 tl = s.corners[0], bl = s.corners[1], br = s.corners[2], tr = s.corners[3];
-            // Top side TL -> TR along (cos 30°, ±sin 30°); left side TL -> BL along (∓sin 30°, cos 30°).
+            // Top side TL -> TR along (cos 30°, ±sin 30°); left side TL -> BL along (∓sin 30°, cos
+            // 30°).
             CHECK(tr.x - tl.x == Approx(4.0 / 3 * L * r3 / 2).margin(1e-9));
             CHECK(tr.y - tl.y == Approx(sign * 4.0 / 3 * L / 2).margin(1e-9));
             CHECK(bl.x - tl.x == Approx(-sign * L / 2).margin(1e-9));
@@ -208,14 +221,16 @@ TEST_CASE("board bench: the tilt seen through the vanishing points is the tilt r
     }
 }
 
-TEST_CASE("board bench: pose, imaging and lighting stay in range and span it", "[board_bench_scene]") {
+TEST_CASE("board bench: pose, imaging and lighting stay in range and span it",
+          "[board_bench_scene]") {
     BoardBenchOptions o;
     o.noise_sigma_min = 2, o.noise_sigma_max = 8;
     o.blur_sigma_min = 0.5, o.blur_sigma_max = 1.5;
     double lo[6] = {1e9, 1e9, 1e9, 1e9, 1e9, 1e9}, hi[6] = {-1e9, -1e9, -1e9, -1e9, -1e9, -1e9};
     for (uint64_t seed = 1; seed <= 200; ++seed) {
         const BoardBenchScene s = make_board_bench_scene(o, seed);
-        const double v[6] = {s.tilt_deg, s.rotation_deg, s.scale, s.noise_sigma, s.blur_sigma, s.light_gain_min};
+        const double v[6] = {s.tilt_deg,    s.rotation_deg, s.scale,
+                             s.noise_sigma, s.blur_sigma,   s.light_gain_min};
         for (int k = 0; k < 6; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
         CHECK(s.board_level >= 170);
         CHECK(s.board_level <= 240);
@@ -276,10 +291,10 @@ TEST_CASE("board bench: the occluder darkens part of exactly one side and no cor
         const int i = s.occluded_side;
         const double len = dist(s.corners[i], s.corners[(i + 1) % 4]);
         const double t0 = s.occluded_from, t1 = s.occluded_to;
-        CHECK(t0 * len >= 10 - 1e-9);          // no corner covered
+        CHECK(t0 * len >= 10 - 1e-9);  // no corner covered
         CHECK((1 - t1) * len >= 10 - 1e-9);
-        CHECK((t1 - t0) * len >= 10 - 1e-9);   // a real part ...
-        CHECK(t1 - t0 <= 0.5 + 1e-12);         // ... of at most half the side
+        CHECK((t1 - t0) * len >= 10 - 1e-9);  // a real part ...
+        CHECK(t1 - t0 <= 0.5 + 1e-12);        // ... of at most half the side
         // Inside, 2.5 px from the side: the covered middle is darker than the board 5 px
         // beyond either end of the covered part (the arm is >= 60 levels below the board).
         const double covered = mean_along(s, i, 0.5 * (t0 + t1), 2.5, 1);
@@ -341,9 +356,11 @@ TEST_CASE("board bench: clutter has straight edges but is not board-like", "[boa
             double min_angle = 180, min_side = 1e9, max_side = 0;
             for (int k = 0; k < n; ++k) {
                 const Point2 a = v[(k + n - 1) % n], p = v[k], b = v[(k + 1) % n];
-                const double cosine = ((a.x - p.x) * (b.x - p.x) + (a.y - p.y) * (b.y - p.y)) / (dist(a, p) * dist(b, p));
+                const double cosine = ((a.x - p.x) * (b.x - p.x) + (a.y - p.y) * (b.y - p.y)) /
+                                      (dist(a, p) * dist(b, p));
                 min_angle = std::min(min_angle, std::acos(cosine) * 180 / kPi);
-                min_side = std::min(min_side, dist(p, b)), max_side = std::max(max_side, dist(p, b));
+                min_side = std::min(min_side, dist(p, b)),
+                max_side = std::max(max_side, dist(p, b));
             }
             if (n == 3) {
                 CHECK(min_angle >= 12);
@@ -355,7 +372,8 @@ TEST_CASE("board bench: clutter has straight edges but is not board-like", "[boa
     }
 }
 
-TEST_CASE("board bench: uneven lighting between the drawn darkest gain and 1", "[board_bench_scene]") {
+TEST_CASE("board bench: uneven lighting between the drawn darkest gain and 1",
+          "[board_bench_scene]") {
     // No noise and no blur, tilt 0: every pixel 1 px inside the rectangle is the board level
     // times the local gain, rounded.
     BoardBenchOptions o = pinned(0, 0, 0.6);
@@ -367,7 +385,8 @@ TEST_CASE("board bench: uneven lighting between the drawn darkest gain and 1", "
     long n = 0, off = 0;
     for (int y = 0; y < 240; ++y)
         for (int x = 0; x < 320; ++x)
-            if (board_distance(even, {double(x), double(y)}) > 1) ++n, off += even.image.at(x, y) != even.board_level;
+            if (board_distance(even, {double(x), double(y)}) > 1)
+                ++n, off += even.image.at(x, y) != even.board_level;
     CHECK(n > 10000);
     CHECK(off == 0);
     o.light_gain_min = 0.55;
@@ -377,7 +396,9 @@ TEST_CASE("board bench: uneven lighting between the drawn darkest gain and 1", "
         int lo = 255, hi = 0;
         for (int y = 0; y < 240; ++y)
             for (int x = 0; x < 320; ++x)
-                if (board_distance(s, {double(x), double(y)}) > 1) lo = std::min(lo, int(s.image.at(x, y))), hi = std::max(hi, int(s.image.at(x, y)));
+                if (board_distance(s, {double(x), double(y)}) > 1)
+                    lo = std::min(lo, int(s.image.at(x, y))),
+                    hi = std::max(hi, int(s.image.at(x, y)));
         CHECK(hi <= s.board_level);
         CHECK(lo >= std::floor(s.board_level * s.light_gain_min + 0.5) - 1);
         spread_max = std::max(spread_max, hi - lo);
@@ -399,8 +420,8 @@ TEST_CASE("line scene: illumination multiplies the composed scene by a ramp and 
     CHECK(lit.at(0, 20) == 55);    // 100·(0.9 − 0.1 − 0.25) = 55
     CHECK(lit.at(100, 20) == 75);  // 100·(0.9 + 0.1 − 0.25)
     CHECK(lit.at(50, 20) == 90);
-    CHECK(lit.at(60, 20) == 91);   // 100·(0.9 + 0.02 − 0.01)
-    CHECK(lit.at(50, 30) == 89);   // 100·(0.9 − 0.01)
+    CHECK(lit.at(60, 20) == 91);  // 100·(0.9 + 0.02 − 0.01)
+    CHECK(lit.at(50, 30) == 89);  // 100·(0.9 − 0.01)
     // A gain below 0 is clamped to 0.
     o.illumination.falloff = 1;
     CHECK(qt::scene::LineScene(o).render().at(0, 0) == 0);
@@ -415,7 +436,8 @@ TEST_CASE("board bench: deterministic in the seed", "[board_bench_scene]") {
     const BoardBenchScene a = make_board_bench_scene(o, 42), b = make_board_bench_scene(o, 42);
     const BoardBenchScene c = make_board_bench_scene(o, 43);
     CHECK(a.image.pixels == b.image.pixels);
-    for (int i = 0; i < 4; ++i) CHECK((a.corners[i].x == b.corners[i].x && a.corners[i].y == b.corners[i].y));
+    for (int i = 0; i < 4; ++i)
+        CHECK((a.corners[i].x == b.corners[i].x && a.corners[i].y == b.corners[i].y));
     CHECK(a.occluded_side == b.occluded_side);
     CHECK(a.image.pixels != c.image.pixels);
     CHECK(a.corners[0].x != c.corners[0].x);
@@ -431,7 +453,7 @@ TEST_CASE("board bench: options outside their ranges are refused", "[board_bench
     refused([](BoardBenchOptions& o) { o.aspect = 0; });
     refused([](BoardBenchOptions& o) { o.tilt_deg_max = 85; });
     refused([](BoardBenchOptions& o) { o.tilt_deg_min = 50; });  // above max
-    refused([](BoardBenchOptions& o) { o.scale_max = 0.97; });   // (240 − 9) / 240 = 0.9625 at most
+    refused([](BoardBenchOptions& o) { o.scale_max = 0.97; });  // (240 − 9) / 240 = 0.9625 at most
     refused([](BoardBenchOptions& o) { o.scale_min = 0; });
     refused([](BoardBenchOptions& o) { o.noise_sigma_min = -1; });
     refused([](BoardBenchOptions& o) { o.blur_sigma_max = 0.5; });  // below min 0.7

@@ -30,7 +30,8 @@ Pt map(const double h[9], Pt p) {
 
 // Inverse by cofactors divided by the determinant.
 void inverse(const double m[9], double r[9]) {
-    const double c0 = m[4] * m[8] - m[5] * m[7], c1 = m[5] * m[6] - m[3] * m[8], c2 = m[3] * m[7] - m[4] * m[6];
+    const double c0 = m[4] * m[8] - m[5] * m[7], c1 = m[5] * m[6] - m[3] * m[8],
+                 c2 = m[3] * m[7] - m[4] * m[6];
     const double det = m[0] * c0 + m[1] * c1 + m[2] * c2;
     r[0] = c0 / det;
     r[1] = (m[2] * m[7] - m[1] * m[8]) / det;
@@ -47,13 +48,15 @@ double bilinear(const GreyImage& img, double x, double y) {
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const double fx = x - x0, fy = y - y0;
     const auto at = [&](int xx, int yy) { return double(img.at(xx, yy)); };
-    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+           fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
 }
 
 // Mean |frame − previous frame warped by h| over pixels whose source lies 2 px inside the previous
 // image and that are more than `keep_out` px from `avoid` (the vehicle, which moves over the
 // ground).
-double warp_error(const GreyImage& prev, const GreyImage& cur, const double h[9], Pt avoid, double keep_out) {
+double warp_error(const GreyImage& prev, const GreyImage& cur, const double h[9], Pt avoid,
+                  double keep_out) {
     double hinv[9];
     inverse(h, hinv);
     double sum = 0;
@@ -76,7 +79,8 @@ struct Window {
 
 Window window(const GreyImage& img, double cx, double cy, double half_w, double half_h) {
     return {std::max(0, int(std::floor(cx - half_w))), std::max(0, int(std::floor(cy - half_h))),
-            std::min(img.width - 1, int(std::ceil(cx + half_w))), std::min(img.height - 1, int(std::ceil(cy + half_h)))};
+            std::min(img.width - 1, int(std::ceil(cx + half_w))),
+            std::min(img.height - 1, int(std::ceil(cy + half_h)))};
 }
 
 // Centroid of the pixels of `win` where pred(x, y) holds; count in n.
@@ -112,14 +116,16 @@ GroundSequenceConfig without_vehicle(GroundSequenceConfig c) {
 
 }  // namespace
 
-TEST_CASE("ground sequence: the truth homographies are a pinhole camera's over the ground", "[ground_sequence]") {
+TEST_CASE("ground sequence: the truth homographies are a pinhole camera's over the ground",
+          "[ground_sequence]") {
     const GroundSequenceConfig c = short_ground_sequence();
     const GroundSequence seq(c);
     const GroundTruth first = seq.truth(0);
     for (int i = 0; i < 9; ++i) CHECK(first.h_from_previous[i] == (i % 4 == 0 ? 1.0 : 0.0));
 
     const double f = c.focal_px, cx = (c.width - 1) / 2.0, cy = (c.height - 1) / 2.0;
-    const Pt probes[5] = {{0, 0}, {c.width - 1.0, 0}, {0, c.height - 1.0}, {c.width - 1.0, c.height - 1.0}, {cx, cy}};
+    const Pt probes[5] = {
+        {0, 0}, {c.width - 1.0, 0}, {0, c.height - 1.0}, {c.width - 1.0, c.height - 1.0}, {cx, cy}};
     GroundTruth prev = first;
     for (int frame = 1; frame < seq.frames(); ++frame) {
         const GroundTruth t = seq.truth(frame);
@@ -151,7 +157,8 @@ TEST_CASE("ground sequence: the truth homographies are a pinhole camera's over t
     }
 }
 
-TEST_CASE("ground sequence: the rendered ground moves by the truth homography", "[ground_sequence]") {
+TEST_CASE("ground sequence: the rendered ground moves by the truth homography",
+          "[ground_sequence]") {
     const GroundSequenceConfig c = short_ground_sequence();
     const GroundSequence seq(c);
     const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -161,7 +168,7 @@ TEST_CASE("ground sequence: the rendered ground moves by the truth homography", 
         const double err = warp_error(prev, cur, t.h_from_previous, {t.target_x, t.target_y}, 20);
         const double still = warp_error(prev, cur, identity, {t.target_x, t.target_y}, 20);
         INFO("frame " << frame << ": warped " << err << ", not warped " << still);
-        CHECK(err < 5);          // noise (2 levels in each frame) and the blur of interpolation
+        CHECK(err < 5);  // noise (2 levels in each frame) and the blur of interpolation
         CHECK(err < 0.5 * still);
     }
 }
@@ -174,15 +181,16 @@ TEST_CASE("ground sequence: the vehicle is rendered where the truth puts it", "[
         const GroundTruth t = seq.truth(frame);
         if (!t.in_view || t.occluded) continue;
         ++checked;
-        INFO("frame " << frame << " truth (" << t.target_x << ", " << t.target_y << ") box " << t.target_w << "×"
-                      << t.target_h);
+        INFO("frame " << frame << " truth (" << t.target_x << ", " << t.target_y << ") box "
+                      << t.target_w << "×" << t.target_h);
         const GreyImage img = seq.render(frame), ground = bare.render(frame);
 
         // The vehicle's own pixels, by difference with the same frame rendered without it (the
         // noise is the same): centred on the truth, as big as its box.
         const Window wide = window(img, t.target_x, t.target_y, 20, 20);
         int n = 0;
-        const Pt diff = centroid(wide, [&](int x, int y) { return std::abs(img.at(x, y) - ground.at(x, y)) > 20; }, n);
+        const Pt diff = centroid(
+            wide, [&](int x, int y) { return std::abs(img.at(x, y) - ground.at(x, y)) > 20; }, n);
         CHECK(diff.x == Approx(t.target_x).margin(1.0));
         CHECK(diff.y == Approx(t.target_y).margin(1.0));
         CHECK(n <= (t.target_w + 1) * (t.target_h + 1));
@@ -190,20 +198,24 @@ TEST_CASE("ground sequence: the vehicle is rendered where the truth puts it", "[
         int elsewhere = 0;  // and nowhere else
         for (size_t i = 0; i < img.pixels.size(); ++i) {
             const int x = int(i % img.width), y = int(i / img.width);
-            if (std::fabs(x - t.target_x) > t.target_w / 2.0 + 1.5 || std::fabs(y - t.target_y) > t.target_h / 2.0 + 1.5)
+            if (std::fabs(x - t.target_x) > t.target_w / 2.0 + 1.5 ||
+                std::fabs(y - t.target_y) > t.target_h / 2.0 + 1.5)
                 elsewhere += img.pixels[i] != ground.pixels[i];
         }
         CHECK(elsewhere == 0);
 
         // In the frame itself: the bright roof (brighter than any ground) is centred on the truth.
-        const Pt roof = centroid(wide, [&](int x, int y) { return img.at(x, y) >= 222; }, n);
+        const Pt roof = centroid(
+            wide, [&](int x, int y) { return img.at(x, y) >= 222; }, n);
         CHECK(n >= 6);
         CHECK(roof.x == Approx(t.target_x).margin(1.0));
         CHECK(roof.y == Approx(t.target_y).margin(1.0));
 
         // The box stands out from the ring around it (dark body, bright roof).
-        const Window box = window(img, t.target_x, t.target_y, t.target_w / 2.0 - 1, t.target_h / 2.0 - 1);
-        const Window ring = window(img, t.target_x, t.target_y, t.target_w / 2.0 + 6, t.target_h / 2.0 + 6);
+        const Window box =
+            window(img, t.target_x, t.target_y, t.target_w / 2.0 - 1, t.target_h / 2.0 - 1);
+        const Window ring =
+            window(img, t.target_x, t.target_y, t.target_w / 2.0 + 6, t.target_h / 2.0 + 6);
         double ring_sum = 0;
         int ring_n = 0;
         for (int y = ring.y0; y <= ring.y1; ++y)
@@ -216,7 +228,8 @@ TEST_CASE("ground sequence: the vehicle is rendered where the truth puts it", "[
         double dev = 0;
         int box_n = 0;
         for (int y = box.y0; y <= box.y1; ++y)
-            for (int x = box.x0; x <= box.x1; ++x, ++box_n) dev += std::fabs(img.at(x, y) - ring_mean);
+            for (int x = box.x0; x <= box.x1; ++x, ++box_n)
+                dev += std::fabs(img.at(x, y) - ring_mean);
         CHECK(dev / box_n > 30);
         // About 8–14 px.
         CHECK(std::max(t.target_w, t.target_h) >= 8);
@@ -237,43 +250,49 @@ TEST_CASE("ground sequence: the vehicle leaves the image for the out-of-view spe
             const bool spell = frame >= c.out_of_view_start && frame < end;
             CHECK(t.in_view == !spell);
             // The box from the truth's centre and size agrees (to the rounding of its size).
-            const double box_out = std::max(outside(c, t.target_x - t.target_w / 2.0, t.target_y - t.target_h / 2.0),
-                                            outside(c, t.target_x + t.target_w / 2.0, t.target_y + t.target_h / 2.0));
+            const double box_out =
+                std::max(outside(c, t.target_x - t.target_w / 2.0, t.target_y - t.target_h / 2.0),
+                         outside(c, t.target_x + t.target_w / 2.0, t.target_y + t.target_h / 2.0));
             if (spell)
                 CHECK(box_out > -1);
             else
                 CHECK(box_out < 1);
             deepest = std::max(deepest, outside(c, t.target_x, t.target_y));
         }
-        CHECK(deepest >= (c.out_of_view_frames >= 100 ? 60 : 25));  // the centre, beyond the border, px
+        CHECK(deepest >=
+              (c.out_of_view_frames >= 100 ? 60 : 25));  // the centre, beyond the border, px
 
         // Well inside the spell nothing of the vehicle is drawn; just before and after it is.
         const GroundSequence bare(without_vehicle(c));
         const int middle = c.out_of_view_start + c.out_of_view_frames / 2;
         CHECK(seq.render(middle).pixels == bare.render(middle).pixels);
-        CHECK(seq.render(c.out_of_view_start - 1).pixels != bare.render(c.out_of_view_start - 1).pixels);
+        CHECK(seq.render(c.out_of_view_start - 1).pixels !=
+              bare.render(c.out_of_view_start - 1).pixels);
         CHECK(seq.render(end).pixels != bare.render(end).pixels);
     }
 }
 
-TEST_CASE("ground sequence: the flare covers the vehicle in the occlusion frames only", "[ground_sequence]") {
+TEST_CASE("ground sequence: the flare covers the vehicle in the occlusion frames only",
+          "[ground_sequence]") {
     const GroundSequenceConfig c = short_ground_sequence();
     const GroundSequence seq(c), bare(without_vehicle(c));
     for (int frame = 0; frame < seq.frames(); ++frame) {
         const GroundTruth t = seq.truth(frame);
         INFO("frame " << frame);
-        CHECK(t.occluded == (frame >= c.occlusion_start && frame < c.occlusion_start + c.occlusion_frames));
+        CHECK(t.occluded ==
+              (frame >= c.occlusion_start && frame < c.occlusion_start + c.occlusion_frames));
     }
     for (int frame = c.occlusion_start; frame < c.occlusion_start + c.occlusion_frames; ++frame) {
         const GroundTruth t = seq.truth(frame);
         INFO("frame " << frame);
         REQUIRE(t.in_view);
         const GreyImage img = seq.render(frame), ground = bare.render(frame);
-        const Window box = window(img, t.target_x, t.target_y, t.target_w / 2.0 + 1, t.target_h / 2.0 + 1);
+        const Window box =
+            window(img, t.target_x, t.target_y, t.target_w / 2.0 + 1, t.target_h / 2.0 + 1);
         for (int y = box.y0; y <= box.y1; ++y)
             for (int x = box.x0; x <= box.x1; ++x) {
-                CHECK(img.at(x, y) >= 240);                 // saturated, like the flare's core
-                CHECK(img.at(x, y) == ground.at(x, y));     // nothing of the vehicle shows
+                CHECK(img.at(x, y) >= 240);              // saturated, like the flare's core
+                CHECK(img.at(x, y) == ground.at(x, y));  // nothing of the vehicle shows
             }
     }
     GroundSequenceConfig none = c;
@@ -282,7 +301,8 @@ TEST_CASE("ground sequence: the flare covers the vehicle in the occlusion frames
     for (int frame = 0; frame < clear.frames(); ++frame) CHECK_FALSE(clear.truth(frame).occluded);
 }
 
-TEST_CASE("ground sequence: rendering is deterministic and the same on every platform", "[ground_sequence]") {
+TEST_CASE("ground sequence: rendering is deterministic and the same on every platform",
+          "[ground_sequence]") {
     const GroundSequenceConfig c = short_ground_sequence();
     const GroundSequence a(c), b(c);
     const GreyImage first = a.render(20);
@@ -325,7 +345,8 @@ TEST_CASE("ground sequence: the ground is textured everywhere, with corners", "[
         std::vector<double> gxx(size_t(w) * h), gyy(gxx.size()), gxy(gxx.size());
         for (int y = 1; y < h - 1; ++y)
             for (int x = 1; x < w - 1; ++x) {
-                const double gx = (img.at(x + 1, y) - img.at(x - 1, y)) / 2.0, gy = (img.at(x, y + 1) - img.at(x, y - 1)) / 2.0;
+                const double gx = (img.at(x + 1, y) - img.at(x - 1, y)) / 2.0,
+                             gy = (img.at(x, y + 1) - img.at(x, y - 1)) / 2.0;
                 gxx[size_t(y) * w + x] = gx * gx;
                 gyy[size_t(y) * w + x] = gy * gy;
                 gxy[size_t(y) * w + x] = gx * gy;
@@ -344,7 +365,8 @@ TEST_CASE("ground sequence: the ground is textured everywhere, with corners", "[
                                 b += gyy[i];
                                 d += gxy[i];
                             }
-                        best = std::max(best, (a + b) / 2 - std::sqrt((a - b) * (a - b) / 4 + d * d));
+                        best =
+                            std::max(best, (a + b) / 2 - std::sqrt((a - b) * (a - b) / 4 + d * d));
                     }
                 if (best >= 1000) ++cornered;  // noise alone: ~50
             }
@@ -367,8 +389,10 @@ TEST_CASE("ground sequence: inter-frame image motion is bounded", "[ground_seque
                     }
                 // Rotation: the turn of a short horizontal segment at the centre, degrees.
                 const double cx = (c.width - 1) / 2.0, cy = (c.height - 1) / 2.0;
-                const Pt p0 = map(t.h_from_previous, {cx, cy}), p1 = map(t.h_from_previous, {cx + 10, cy});
-                const double turn = std::fabs(std::atan2(p1.y - p0.y, p1.x - p0.x)) * 180 / 3.14159265358979;
+                const Pt p0 = map(t.h_from_previous, {cx, cy}),
+                         p1 = map(t.h_from_previous, {cx + 10, cy});
+                const double turn =
+                    std::fabs(std::atan2(p1.y - p0.y, p1.x - p0.x)) * 180 / 3.14159265358979;
                 INFO("seed " << seed << " frame " << frame << " of " << c.frames);
                 CHECK(most <= 7.0);
                 CHECK(turn <= 1.0);

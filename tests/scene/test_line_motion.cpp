@@ -40,9 +40,9 @@ LineTrackerParams tracker(LineModel model, int filters = 3) {
 }  // namespace
 
 TEST_CASE("overlap: the tracked line on the truth scores 1", "[line_motion]") {
-    // Along the major axis every drawn pixel is the line's point rounded in the minor axis only
-    // (<= 0.5 px off the line), and the drawn columns reach at most 0.5 px past each end, so
-    // every pixel lies within sqrt(0.5² + 0.5²) ≈ 0.71 px of the segment: inside the 1 px half-band.
+    // Along the major axis every drawn pixel is the line's point rounded in the minor axis only (<=
+    // 0.5 px off the line), and the drawn columns reach at most 0.5 px past each end, so every
+    // pixel lies within sqrt(0.5² + 0.5²) ≈ 0.71 px of the segment: inside the 1 px half-band.
     const sc::GtSegment shallow{20.3, 40.7, 140.2, 95.1}, steep{200.4, 10.2, 170.9, 190.6};
     CHECK(sc::overlap_ratio(shallow, tracked(20.3, 40.7, 140.2, 95.1)) == 1.0);
     CHECK(sc::overlap_ratio(steep, tracked(200.4, 10.2, 170.9, 190.6)) == 1.0);
@@ -66,7 +66,8 @@ TEST_CASE("overlap: a line 0.9 px off still lies in the 2 px band", "[line_motio
     CHECK(sc::overlap_ratio({10, 100, 50, 100}, tracked(0, 101.6, 300, 101.6)) == 0.0);
 }
 
-TEST_CASE("overlap: a tilted line leaves the band after a known number of pixels", "[line_motion]") {
+TEST_CASE("overlap: a tilted line leaves the band after a known number of pixels",
+          "[line_motion]") {
     // Truth y = 100, x in [10, 50]. Tracked: y = 100.05 + (x − 10) / 10 (through (10, 100.05)
     // and (110, 110.05)). The truth's ends project onto it at x = 10 − 0.5/101 ≈ 9.995 and
     // x = 10 + (400 − 0.05)/101 ≈ 49.60, so columns 10..50 are drawn: 41 pixels. Row of column x:
@@ -79,7 +80,8 @@ TEST_CASE("overlap: a tilted line leaves the band after a known number of pixels
           Approx(15.0 / 41.0).epsilon(1e-12));
 }
 
-TEST_CASE("overlap: the band ends at the truth's end points, not the infinite line", "[line_motion]") {
+TEST_CASE("overlap: the band ends at the truth's end points, not the infinite line",
+          "[line_motion]") {
     // Truth y = 100, x in [10, 50]; tracked: the vertical x = 50.6. Both truth ends project to
     // (50.6, 100): one pixel, (51, 100), 1 px from the end (50, 100): inside, ratio 1.
     CHECK(sc::overlap_ratio({10, 100, 50, 100}, tracked(50.6, 0, 50.6, 200)) == 1.0);
@@ -87,12 +89,15 @@ TEST_CASE("overlap: the band ends at the truth's end points, not the infinite li
     CHECK(sc::overlap_ratio({10, 100, 50, 100}, tracked(51.6, 0, 51.6, 200)) == 0.0);
     // A wider band takes it in: band 4 px, half-band 2 px.
     CHECK(sc::overlap_ratio({10, 100, 50, 100}, tracked(51.6, 0, 51.6, 200), 4.0) == 1.0);
-    CHECK_THROWS_AS(sc::overlap_ratio({10, 100, 50, 100}, tracked(0, 0, 1, 1), 0.0), std::invalid_argument);
+    CHECK_THROWS_AS(sc::overlap_ratio({10, 100, 50, 100}, tracked(0, 0, 1, 1), 0.0),
+                    std::invalid_argument);
 }
 
 TEST_CASE("measured_segment matches an independent construction", "[line_motion]") {
-    const sc::GtSegment cases[] = {
-        {20.3, 40.7, 140.2, 95.1}, {140.2, 95.1, 20.3, 40.7}, {-30, 5, 40, -12.5}, {100, 0, 100, 50}};
+    const sc::GtSegment cases[] = {{20.3, 40.7, 140.2, 95.1},
+                                   {140.2, 95.1, 20.3, 40.7},
+                                   {-30, 5, 40, -12.5},
+                                   {100, 0, 100, 50}};
     for (const sc::GtSegment& g : cases) {
         const Segment m = sc::measured_segment(g), r = segment(g.x1, g.y1, g.x2, g.y2, 0);
         INFO("segment (" << g.x1 << ", " << g.y1 << ") - (" << g.x2 << ", " << g.y2 << ")");
@@ -157,13 +162,15 @@ TEST_CASE("Experiment 2 data: the line keeps its Hough r while it turns", "[line
     }
     // About the origin the measured rho is r itself.
     const sc::GtTrack t = sc::rotation_track({0, 0}, 10, 33, 16);
-    for (const sc::GtSegment& g : t) CHECK(std::abs(sc::measured_segment(g).rho.raw - 10 * 65536) <= 1);
+    for (const sc::GtSegment& g : t)
+        CHECK(std::abs(sc::measured_segment(g).rho.raw - 10 * 65536) <= 1);
 }
 
 TEST_CASE("a line that does not move is tracked exactly by every model", "[line_motion]") {
     // No motion: every prediction is the measured line itself, which scores 1 (see above).
     const sc::GtTrack still(20, sc::GtSegment{30.2, 60.7, 150.4, 20.1});
-    for (int n = 1; n <= 3; ++n) CHECK(sc::track_mean_overlap(still, tracker(LineModel::closest_points, n)) == 1.0);
+    for (int n = 1; n <= 3; ++n)
+        CHECK(sc::track_mean_overlap(still, tracker(LineModel::closest_points, n)) == 1.0);
     CHECK(sc::track_mean_overlap(still, tracker(LineModel::turn)) == 1.0);
     CHECK_THROWS_AS(sc::track_mean_overlap(sc::GtTrack(1, still[0]), tracker(LineModel::turn)),
                     std::invalid_argument);
@@ -182,11 +189,13 @@ TEST_CASE("acceptance: turn model keeps >= 80 % overlap at 8 deg/frame about the
 
 TEST_CASE("acceptance: turn model matches 3KF in translation", "[line_motion][acceptance]") {
     const sc::TranslationTable turn = sc::translation_experiment(tracker(LineModel::turn));
-    const sc::TranslationTable kf3 = sc::translation_experiment(tracker(LineModel::closest_points, 3));
+    const sc::TranslationTable kf3 =
+        sc::translation_experiment(tracker(LineModel::closest_points, 3));
     REQUIRE(turn.speeds.size() == 3);
     for (std::size_t s = 0; s < turn.speeds.size(); ++s) {
         const double a = sc::mean_of(turn.overlap[s]), b = sc::mean_of(kf3.overlap[s]);
-        INFO("speed " << turn.speeds[s] << " px/frame: turn " << 100 * a << " %, 3KF " << 100 * b << " %");
+        INFO("speed " << turn.speeds[s] << " px/frame: turn " << 100 * a << " %, 3KF " << 100 * b
+                      << " %");
         CHECK(a >= b - 0.01);
     }
 }

@@ -56,7 +56,9 @@ std::vector<std::vector<Point2>> chain_polygons(const std::vector<TrueSegment>& 
     return polys;
 }
 
-double cross(Point2 o, Point2 a, Point2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+double cross(Point2 o, Point2 a, Point2 b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
 
 bool strictly_inside_convex(const std::vector<Point2>& poly, Point2 p) {
     int pos = 0, neg = 0;
@@ -110,7 +112,8 @@ TEST_CASE("scene: fractional coverage of edge and corner pixels", "[scene]") {
 TEST_CASE("scene: concave polygon and sloped triangle areas", "[scene]") {
     // L shape on half-pixel corners: area 50·20 + 20·30 = 1600 px^2, the notch stays background.
     LineScene l(plain(80, 80, 40));
-    l.add_polygon({{10.5, 10.5}, {60.5, 10.5}, {60.5, 30.5}, {30.5, 30.5}, {30.5, 60.5}, {10.5, 60.5}}, 240);
+    l.add_polygon(
+        {{10.5, 10.5}, {60.5, 10.5}, {60.5, 30.5}, {30.5, 30.5}, {30.5, 60.5}, {10.5, 60.5}}, 240);
     const GreyImage li = l.render();
     CHECK(covered_area(li, 40, 240) == Approx(1600).margin(0.01));
     CHECK(int(li.at(45, 45)) == 40);
@@ -172,9 +175,9 @@ TEST_CASE("scene: noise on a flat frame has mean 0 and the requested sigma", "[s
         const double sd = std::sqrt(m2);
         INFO("sigma " << sigma << " mean " << m1 << " sd " << sd);
         CHECK(m1 == Approx(128).margin(0.1));
-        CHECK(sd == Approx(sigma).epsilon(0.03));                  // rounding adds 1/12 grey^2
-        CHECK(std::fabs(m3 / (m2 * sd)) < 0.05);                   // skewness of a Gaussian: 0
-        CHECK(m4 / (m2 * m2) == Approx(3).margin(0.15));           // kurtosis of a Gaussian: 3
+        CHECK(sd == Approx(sigma).epsilon(0.03));         // rounding adds 1/12 grey^2
+        CHECK(std::fabs(m3 / (m2 * sd)) < 0.05);          // skewness of a Gaussian: 0
+        CHECK(m4 / (m2 * m2) == Approx(3).margin(0.15));  // kurtosis of a Gaussian: 3
     }
 }
 
@@ -249,7 +252,8 @@ TEST_CASE("scene: random polygons are inside, long-sided, convex and contrasting
             for (Point2 v : p) c.x += v.x / p.size(), c.y += v.y / p.size();
             REQUIRE(strictly_inside_convex(p, c));  // convex with a consistent winding
             for (std::size_t j = 0; j < polys.size(); ++j)
-                for (Point2 v : polys[j]) REQUIRE((j == i || !strictly_inside_convex(p, v)));  // no overlap
+                for (Point2 v : polys[j])
+                    REQUIRE((j == i || !strictly_inside_convex(p, v)));  // no overlap
             const int level = img.at(int(std::lround(c.x)), int(std::lround(c.y)));
             REQUIRE(std::abs(level - 60) >= 60);
         }
@@ -279,7 +283,8 @@ TEST_CASE("scene: impossible requests are refused", "[scene]") {
     CHECK_THROWS_AS(s.add_polygon({{1, 1}, {5, 5}}, 200), std::invalid_argument);
     CHECK_THROWS_AS(s.add_line({3, 3}, {3, 3}, 2, 200), std::invalid_argument);
     CHECK_THROWS_AS(qt::scene::random_polygon_scene(SceneOptions{}, 1, 200), std::invalid_argument);
-    CHECK_THROWS_AS(qt::scene::random_line_scene(SceneOptions{}, 1, 500, 600), std::invalid_argument);
+    CHECK_THROWS_AS(qt::scene::random_line_scene(SceneOptions{}, 1, 500, 600),
+                    std::invalid_argument);
     SceneOptions bad;
     bad.noise_sigma = -1;
     CHECK_THROWS_AS(LineScene(bad), std::invalid_argument);

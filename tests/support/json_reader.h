@@ -54,7 +54,8 @@ private:
         return t_[pos_];
     }
     void expect(char c) {
-        if (peek() != c) throw std::runtime_error(std::string("expected ") + c + " at " + std::to_string(pos_));
+        if (peek() != c)
+            throw std::runtime_error(std::string("expected ") + c + " at " + std::to_string(pos_));
         ++pos_;
     }
     void literal(const char* word) {
@@ -71,7 +72,8 @@ private:
                 const char e = t_[pos_];
                 s += e == 'n' ? '\n' : e == 't' ? '\t' : e;
             } else {
-                if (static_cast<unsigned char>(t_[pos_]) < 0x20) throw std::runtime_error("control char in string");
+                if (static_cast<unsigned char>(t_[pos_]) < 0x20)
+                    throw std::runtime_error("control char in string");
                 s += t_[pos_];
             }
             ++pos_;
@@ -136,9 +138,11 @@ private:
         // Number per RFC 8259: -? int frac? exp?
         const size_t start = pos_;
         if (t_[pos_] == '-') ++pos_;
-        if (pos_ >= t_.size() || !std::isdigit(static_cast<unsigned char>(t_[pos_]))) throw std::runtime_error("bad value");
-        while (pos_ < t_.size() && (std::isdigit(static_cast<unsigned char>(t_[pos_])) || t_[pos_] == '.' ||
-                                    t_[pos_] == 'e' || t_[pos_] == 'E' || t_[pos_] == '+' || t_[pos_] == '-'))
+        if (pos_ >= t_.size() || !std::isdigit(static_cast<unsigned char>(t_[pos_])))
+            throw std::runtime_error("bad value");
+        while (pos_ < t_.size() &&
+               (std::isdigit(static_cast<unsigned char>(t_[pos_])) || t_[pos_] == '.' ||
+                t_[pos_] == 'e' || t_[pos_] == 'E' || t_[pos_] == '+' || t_[pos_] == '-'))
             ++pos_;
         const std::string num = t_.substr(start, pos_ - start);
         char* end = nullptr;

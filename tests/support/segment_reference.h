@@ -17,7 +17,8 @@ inline double from_q16(q16_16 v) { return v.raw / 65536.0; }
 inline angle_t angle_deg(double deg) {
     double turns = deg / 360.0;
     turns -= std::floor(turns);
-    return static_cast<angle_t>(static_cast<uint64_t>(std::llround(turns * 4294967296.0)) & 0xFFFFFFFFu);
+    return static_cast<angle_t>(static_cast<uint64_t>(std::llround(turns * 4294967296.0)) &
+                                0xFFFFFFFFu);
 }
 
 // The segment (x1, y1) -> (x2, y2), pixels, with `points` edge points.

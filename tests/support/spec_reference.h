@@ -35,7 +35,8 @@ inline std::vector<RefGradient> frame_gradients(const std::vector<uint8_t>& px, 
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const int gx = p(x + 1, y) - p(x - 1, y), gy = p(x, y + 1) - p(x, y - 1);
-            g.push_back({gx, gy, (gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy), direction_rule(gx, gy)});
+            g.push_back(
+                {gx, gy, (gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy), direction_rule(gx, gy)});
         }
     return g;
 }

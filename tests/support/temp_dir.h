@@ -17,7 +17,8 @@ struct TempDir {
         std::random_device rd;
         const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
         dir = std::filesystem::temp_directory_path() /
-              ("quadtrack_test_" + std::to_string(rd()) + "_" + std::to_string(static_cast<long long>(now)));
+              ("quadtrack_test_" + std::to_string(rd()) + "_" +
+               std::to_string(static_cast<long long>(now)));
         std::filesystem::create_directories(dir);
     }
     ~TempDir() {

@@ -1,4 +1,4 @@
-// Soak runs (issue 8, part A) in the test command, kept short; bash bench.sh soak runs them
+// Soak runs in the test command, kept short; bash bench.sh soak runs them
 // longer (platform/bench/bench_soak.cpp, --frames, --seeds) in an ASan + UBSan build. What is
 // generated and which rules are checked every frame is written at the top of
 // platform/bench/soak_runs.h; here the runs' results are held to those rules, the variance bound
@@ -12,11 +12,11 @@
 #include <memory>
 #include <vector>
 
-#include "scene/ground_sequence.h"
 #include "base/prng.h"
-#include "tracking/quad_tracker.h"
 #include "bench/soak_runs.h"
+#include "scene/ground_sequence.h"
 #include "target/float/target_pipeline.h"
+#include "tracking/quad_tracker.h"
 
 using namespace qt;
 
@@ -42,7 +42,8 @@ TEST_CASE("soak: the covariance bound, worked by hand", "[soak]") {
     CHECK(b.pos >= 1420.5);
 }
 
-TEST_CASE("soak: the covariance bound holds for a double-precision filter under any update pattern", "[soak]") {
+TEST_CASE("soak: the covariance bound holds for a double-precision filter under any update pattern",
+          "[soak]") {
     // An independent 2-state constant-velocity Kalman filter in double (kalman.h's model),
     // updated at random with gaps of 1..16 frames, predicted every frame: Ppp and Pvv never
     // exceed the bound for the age, and come within 15 % of the settled bound (it is not
@@ -51,7 +52,8 @@ TEST_CASE("soak: the covariance bound holds for a double-precision filter under 
     const int max_gap = 16;
     const soak::VarianceBound settled = soak::cv_variance_bound(q, r, p0p, p0v, max_gap, max_gap);
     soak::VarianceBound by_age[max_gap + 1];
-    for (int age = 0; age <= max_gap; ++age) by_age[age] = soak::cv_variance_bound(q, r, p0p, p0v, max_gap, age);
+    for (int age = 0; age <= max_gap; ++age)
+        by_age[age] = soak::cv_variance_bound(q, r, p0p, p0v, max_gap, age);
     Pcg32 rng(7);
     double worst_pos = 0, worst_vel = 0;          // over ages >= max_gap, against the settled bound
     double worst_pos_any = 0, worst_vel_any = 0;  // over all ages, against the bound for the age
@@ -87,14 +89,16 @@ TEST_CASE("soak: the covariance bound holds for a double-precision filter under 
     CHECK(worst_vel > 0.85);
 }
 
-TEST_CASE("soak: quadrangle tracker, 10^5 frames, 30 % of sides missed, bursts of total loss", "[soak]") {
+TEST_CASE("soak: quadrangle tracker, 10^5 frames, 30 % of sides missed, bursts of total loss",
+          "[soak]") {
     soak::QuadSoakConfig cfg;  // 100 000 frames, seed 1, the paper's 3KF
     REQUIRE(cfg.frames == 100000);
     const soak::QuadSoakResult r = soak::run_quad_soak(cfg);
     INFO("first break: " << r.first_break);
-    INFO("bursts " << r.bursts << " (long " << r.long_bursts << "), worst recovery " << r.worst_recovery
-                   << " frames, worst wait for a whole board " << r.worst_wait_full << ", Ppp " << r.max_pos_variance
-                   << " (bound " << r.pos_variance_bound << "), Pvv " << r.max_vel_variance << " (bound "
+    INFO("bursts " << r.bursts << " (long " << r.long_bursts << "), worst recovery "
+                   << r.worst_recovery << " frames, worst wait for a whole board "
+                   << r.worst_wait_full << ", Ppp " << r.max_pos_variance << " (bound "
+                   << r.pos_variance_bound << "), Pvv " << r.max_vel_variance << " (bound "
                    << r.vel_variance_bound << ")");
     CHECK(r.frames == cfg.frames);
     CHECK(r.breaks == 0);
@@ -134,7 +138,8 @@ TEST_CASE("soak: quadrangle tracker with the turn model, 2·10^4 frames", "[soak
     CHECK(r.max_vel_variance <= r.vel_variance_bound);
 }
 
-TEST_CASE("soak: target tracker, long spells out of view and every leg of the lost rule", "[soak]") {
+TEST_CASE("soak: target tracker, long spells out of view and every leg of the lost rule",
+          "[soak]") {
     soak::TargetSoakConfig cfg;
     cfg.frames = 20000;
     const soak::TargetSoakResult r = soak::run_target_soak(cfg);
@@ -163,7 +168,8 @@ struct PipelineRun {
     std::unique_ptr<TargetPipelineQvga> pipe = std::make_unique<TargetPipelineQvga>();
     TargetFrame out;
     Status frame(const io::GreyImage& img) {
-        Status s = pipe->begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height));
+        Status s =
+            pipe->begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height));
         for (int y = 0; y < img.height && s == Status::ok; ++y)
             s = pipe->push_row(img.row(y), static_cast<uint16_t>(img.width));
         return s == Status::ok ? pipe->finish(out) : s;
@@ -171,13 +177,16 @@ struct PipelineRun {
 };
 
 bool trusted(const TargetFrame& f, const TargetTrackerParams& p) {
-    return f.geometry.ransac.status == HomographyStatus::ok && f.geometry.ransac.reprojection_px <= p.gate_rep_px;
+    return f.geometry.ransac.status == HomographyStatus::ok &&
+           f.geometry.ransac.reprojection_px <= p.gate_rep_px;
 }
 
 }  // namespace
 
-TEST_CASE("soak: the target pipeline on flat and noise frames is lost after max_bad_geometry + 1, until set_target",
-          "[soak]") {
+TEST_CASE(
+    "soak: the target pipeline on flat and noise frames is lost after max_bad_geometry + 1, until "
+    "set_target",
+    "[soak]") {
     const scene::GroundSequence seq(scene::short_ground_sequence());
     std::vector<io::GreyImage> ground;
     for (int k = 0; k < 6; ++k) ground.push_back(seq.render(k));
@@ -193,8 +202,9 @@ TEST_CASE("soak: the target pipeline on flat and noise frames is lost after max_
     run.pipe->configure(TargetPipelineConfig{});
     auto start_on = [&](int k) {
         const scene::GroundTruth t = seq.truth(k);
-        REQUIRE(run.pipe->set_target(static_cast<int32_t>(t.target_x + 0.5) - 7, static_cast<int32_t>(t.target_y + 0.5) - 7,
-                                     15, 15) == Status::ok);
+        REQUIRE(run.pipe->set_target(static_cast<int32_t>(t.target_x + 0.5) - 7,
+                                     static_cast<int32_t>(t.target_y + 0.5) - 7, 15,
+                                     15) == Status::ok);
         REQUIRE(run.frame(ground[static_cast<size_t>(k)]) == Status::ok);
         REQUIRE(run.out.started);
         REQUIRE(run.frame(ground[static_cast<size_t>(k + 1)]) == Status::ok);

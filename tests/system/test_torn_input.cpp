@@ -1,4 +1,4 @@
-// Torn input (issue 8, part B): every streaming entry point of the core pipeline given a frame
+// Torn input: every streaming entry point of the core pipeline given a frame
 // that ends early, rows of the wrong length and size changes between frames. For each:
 // the documented error status, no frame afterwards (rows refused with not_in_frame, finish()
 // refused, no results of an earlier frame left standing), and the NEXT good frame processed
@@ -14,11 +14,12 @@
 //   begin_frame() while rows are missing         previous_frame_incomplete, the new frame starts
 //   a row of the wrong length (shorter, longer, 0) bad_row_length; the frame is abandoned: later
 //                                                 rows and finish() get not_in_frame, and the
-//                                                 next begin_frame() is ok (nothing left to abandon)
+//                                                 next begin_frame() is ok (nothing left to
+//                                                 abandon)
 //   finish() before the last row                  not_in_frame, no results; Harris ends the frame
-//                                                 there (next begin ok), the line/board detectors and
-//                                                 the target pipeline keep it open (next begin:
-//                                                 previous_frame_incomplete)
+//                                                 there (next begin ok), the line/board detectors
+//                                                 and the target pipeline keep it open (next
+//                                                 begin: previous_frame_incomplete)
 //   a row after the last one                      not_in_frame, the frame's results unharmed
 //   begin_frame() with 0 or above capacity        bad_size and no frame at all (also when it
 //                                                 arrives in the middle of a frame)
@@ -30,13 +31,13 @@
 #include <string>
 #include <vector>
 
+#include "gradient/gradient_stage.h"
+#include "lines/line_detector.h"
 #include "quads/board_detector.h"
 #include "scene/board_scene.h"
-#include "gradient/gradient_stage.h"
 #include "scene/ground_sequence.h"
-#include "target/harris.h"
-#include "lines/line_detector.h"
 #include "target/float/target_pipeline.h"
+#include "target/harris.h"
 
 using namespace qt;
 using io::GreyImage;
@@ -54,8 +55,8 @@ namespace {
 
 struct Frame {
     int w = 0, h = 0;
-    std::vector<uint8_t> pixels;        // w·h
-    std::vector<gradient_word> words;   // w·h, from a GradientStage of their own
+    std::vector<uint8_t> pixels;       // w·h
+    std::vector<gradient_word> words;  // w·h, from a GradientStage of their own
     const uint8_t* row(int y) const { return pixels.data() + static_cast<size_t>(y) * w; }
     const gradient_word* word_row(int y) const { return words.data() + static_cast<size_t>(y) * w; }
 };
@@ -67,12 +68,14 @@ Frame make_frame(const GreyImage& img) {
     f.pixels = img.pixels;
     f.words.resize(f.pixels.size());
     const auto stage = std::make_unique<GradientStage<640>>();  // a fresh one: one frame only
-    REQUIRE(stage->begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h)) == Status::ok);
+    REQUIRE(stage->begin_frame(static_cast<uint16_t>(f.w), static_cast<uint16_t>(f.h)) ==
+            Status::ok);
     for (int y = 0; y < f.h; ++y)
         REQUIRE(stage->push_row(f.row(y), static_cast<uint16_t>(f.w),
-                               [&](uint16_t gy, const gradient_word* wds, uint16_t n) {
-                                   std::memcpy(f.words.data() + static_cast<size_t>(gy) * f.w, wds, n * sizeof *wds);
-                               }) == Status::ok);
+                                [&](uint16_t gy, const gradient_word* wds, uint16_t n) {
+                                    std::memcpy(f.words.data() + static_cast<size_t>(gy) * f.w, wds,
+                                                n * sizeof *wds);
+                                }) == Status::ok);
     return f;
 }
 
@@ -163,11 +166,12 @@ void add_lines(Out& o, const Lines& d) {
     o.add(int64_t{d.line_count()});
     for (uint16_t i = 0; i < d.line_count(); ++i) o.add(d.lines()[i]);
     const LineStats& s = d.stats();
-    for (int64_t x : {int64_t{s.edges}, int64_t{s.edges_dropped}, int64_t{s.hough.points_visited},
-                      int64_t{s.hough.votes}, int64_t{s.hough.saturated_votes}, int64_t{s.hough.lines_followed},
-                      int64_t{s.hough.walk_steps}, int64_t{s.hough.segments}, int64_t{s.hough.segments_dropped},
-                      int64_t{s.hough.budget_exhausted}, int64_t{s.cluster.clusters},
-                      int64_t{s.cluster.clusters_dropped}, int64_t{s.cluster.ends_joined}})
+    for (int64_t x :
+         {int64_t{s.edges}, int64_t{s.edges_dropped}, int64_t{s.hough.points_visited},
+          int64_t{s.hough.votes}, int64_t{s.hough.saturated_votes}, int64_t{s.hough.lines_followed},
+          int64_t{s.hough.walk_steps}, int64_t{s.hough.segments}, int64_t{s.hough.segments_dropped},
+          int64_t{s.hough.budget_exhausted}, int64_t{s.cluster.clusters},
+          int64_t{s.cluster.clusters_dropped}, int64_t{s.cluster.ends_joined}})
         o.add(x);
     const EdgeList& e = d.edges();
     o.add(int64_t{e.size()});
@@ -189,7 +193,7 @@ const T* row_of(const T* row, int w, uint16_t len, std::vector<T>& scratch) {
 struct GradientAdapter {
     static constexpr const char* name = "GradientStage";
     static constexpr bool stateful = false, has_finish = false;
-    static constexpr uint16_t max_w = 320, max_h = 0;  // no height capacity
+    static constexpr uint16_t max_w = 320, max_h = 0;         // no height capacity
     static constexpr Status after_early_finish = Status::ok;  // (no finish)
     GradientStage<320> stage;
     std::vector<int64_t> emitted;
@@ -231,7 +235,8 @@ struct DetectorFeed {
 
 template <bool Words>
 struct LineAdapter : DetectorFeed<LineDetectorQvga, LineParams, Words> {
-    static constexpr const char* name = Words ? "LineDetectorQvga push_gradient_row" : "LineDetectorQvga push_row";
+    static constexpr const char* name =
+        Words ? "LineDetectorQvga push_gradient_row" : "LineDetectorQvga push_row";
     using DetectorFeed<LineDetectorQvga, LineParams, Words>::det;
     Out output() const {
         Out o;
@@ -244,7 +249,8 @@ struct LineAdapter : DetectorFeed<LineDetectorQvga, LineParams, Words> {
 
 template <bool Words>
 struct BoardAdapter : DetectorFeed<BoardDetectorQvga, BoardParams, Words> {
-    static constexpr const char* name = Words ? "BoardDetectorQvga push_gradient_row" : "BoardDetectorQvga push_row";
+    static constexpr const char* name =
+        Words ? "BoardDetectorQvga push_gradient_row" : "BoardDetectorQvga push_row";
     using DetectorFeed<BoardDetectorQvga, BoardParams, Words>::det;
     Out output() const {
         Out o;
@@ -260,15 +266,17 @@ struct BoardAdapter : DetectorFeed<BoardDetectorQvga, BoardParams, Words> {
             o.add(int64_t{q.score.raw});
         }
         const QuadStats& s = det->quad_stats();
-        for (int64_t x : {int64_t{s.parallel_pairs}, int64_t{s.pairs_dropped}, int64_t{s.combinations},
-                          int64_t{s.rejected_perpendicular}, int64_t{s.rejected_shape}, int64_t{s.rejected_contrast},
-                          int64_t{s.rejected_inside}, int64_t{s.rejected_sides}, int64_t{s.rejected_aspect},
-                          int64_t{s.rejected_support}})
+        for (int64_t x :
+             {int64_t{s.parallel_pairs}, int64_t{s.pairs_dropped}, int64_t{s.combinations},
+              int64_t{s.rejected_perpendicular}, int64_t{s.rejected_shape},
+              int64_t{s.rejected_contrast}, int64_t{s.rejected_inside}, int64_t{s.rejected_sides},
+              int64_t{s.rejected_aspect}, int64_t{s.rejected_support}})
             o.add(x);
         return o;
     }
     bool no_results() const {
-        return det->quad_count() == 0 && det->lines().segment_count() == 0 && det->lines().line_count() == 0;
+        return det->quad_count() == 0 && det->lines().segment_count() == 0 &&
+               det->lines().line_count() == 0;
     }
     bool meaningful() const { return det->quad_count() >= 1; }
 };
@@ -278,10 +286,12 @@ struct BoardAdapter : DetectorFeed<BoardDetectorQvga, BoardParams, Words> {
 template <bool Words>
 struct HarrisAdapter {
     using Det = HarrisDetector<320, 96, 4, 2>;
-    static constexpr const char* name = Words ? "HarrisDetector push_gradient_row" : "HarrisDetector push_pixel_row";
+    static constexpr const char* name =
+        Words ? "HarrisDetector push_gradient_row" : "HarrisDetector push_pixel_row";
     static constexpr bool stateful = false, has_finish = true;
     static constexpr uint16_t max_w = 320, max_h = Det::kMaxHeight;
-    static constexpr Status after_early_finish = Status::ok;  // harris.h: "the frame ends either way"
+    static constexpr Status after_early_finish =
+        Status::ok;  // harris.h: "the frame ends either way"
     std::unique_ptr<Det> det = std::make_unique<Det>();
     std::vector<uint8_t> px;
     std::vector<gradient_word> wd;
@@ -292,7 +302,8 @@ struct HarrisAdapter {
         if (s != Status::ok) return s;
         // A row beyond the frame's last: nothing to pair it with (the pixel row was refused).
         const uint16_t glen = Words ? len : static_cast<uint16_t>(f.w);
-        return det->push_gradient_row(static_cast<uint16_t>(y), row_of(f.word_row(y), f.w, glen, wd), glen);
+        return det->push_gradient_row(static_cast<uint16_t>(y),
+                                      row_of(f.word_row(y), f.w, glen, wd), glen);
     }
     Status finish() { return det->finish(); }
     Out output() const {
@@ -303,11 +314,15 @@ struct HarrisAdapter {
         o.add(int64_t{fs.count});
         for (uint16_t i = 0; i < fs.count; ++i) {
             const auto& f = fs.items[i];
-            for (int64_t x : {f.response, int64_t{f.x_q8}, int64_t{f.y_q8}, int64_t{f.px}, int64_t{f.py}}) o.add(x);
+            for (int64_t x :
+                 {f.response, int64_t{f.x_q8}, int64_t{f.y_q8}, int64_t{f.px}, int64_t{f.py}})
+                o.add(x);
             for (uint8_t p : f.patch) o.add(int64_t{p});
         }
         const HarrisStats& s = det->stats();
-        for (int64_t x : {int64_t{s.candidates}, int64_t{s.replaced}, int64_t{s.dropped}, int64_t{s.weak}}) o.add(x);
+        for (int64_t x :
+             {int64_t{s.candidates}, int64_t{s.replaced}, int64_t{s.dropped}, int64_t{s.weak}})
+            o.add(x);
         return o;
     }
     bool no_results() const { return det->features().count == 0; }
@@ -331,12 +346,14 @@ void add_frame(Out& o, const TargetFrame& f) {
     o.add(g.ransac.reprojection_px);
     o.add(int64_t{g.matches});
     const MatchStats& m = g.match_stats;
-    for (int64_t x : {int64_t{m.scored}, int64_t{m.flat}, int64_t{m.no_candidate}, int64_t{m.below_min},
-                      int64_t{m.ambiguous}, int64_t{m.not_mutual}, int64_t{m.dropped_capacity}})
+    for (int64_t x :
+         {int64_t{m.scored}, int64_t{m.flat}, int64_t{m.no_candidate}, int64_t{m.below_min},
+          int64_t{m.ambiguous}, int64_t{m.not_mutual}, int64_t{m.dropped_capacity}})
         o.add(x);
     for (float x : {f.window.x, f.window.y, f.window.radius}) o.add(x);
     o.add(int64_t{f.hit.found});
-    for (int64_t x : {int64_t{f.hit.x_q8}, int64_t{f.hit.y_q8}, int64_t{f.hit.score_q15}, int64_t{f.hit.positions}})
+    for (int64_t x : {int64_t{f.hit.x_q8}, int64_t{f.hit.y_q8}, int64_t{f.hit.score_q15},
+                      int64_t{f.hit.positions}})
         o.add(x);
 }
 
@@ -344,7 +361,8 @@ void add_frame(Out& o, const TargetFrame& f) {
 // airborne sequence's frame 0, a 15 × 15 box).
 template <bool Track>
 struct TargetAdapter {
-    static constexpr const char* name = Track ? "TargetPipelineQvga tracking" : "TargetPipelineQvga";
+    static constexpr const char* name =
+        Track ? "TargetPipelineQvga tracking" : "TargetPipelineQvga";
     static constexpr bool stateful = true, has_finish = true;
     static constexpr uint16_t max_w = 320, max_h = HarrisDetector<320, 96>::kMaxHeight;
     static constexpr Status after_early_finish = Status::previous_frame_incomplete;
@@ -356,11 +374,14 @@ struct TargetAdapter {
         if (Track) {
             const scene::GroundTruth t = ground().truth(0);
             REQUIRE(pipe->set_target(static_cast<int32_t>(t.target_x + 0.5) - 7,
-                                     static_cast<int32_t>(t.target_y + 0.5) - 7, 15, 15) == Status::ok);
+                                     static_cast<int32_t>(t.target_y + 0.5) - 7, 15,
+                                     15) == Status::ok);
         }
     }
     Status begin(uint16_t w, uint16_t h) { return pipe->begin_frame(w, h); }
-    Status push(const Frame& f, int y, uint16_t len) { return pipe->push_row(row_of(f.row(y), f.w, len, px), len); }
+    Status push(const Frame& f, int y, uint16_t len) {
+        return pipe->push_row(row_of(f.row(y), f.w, len, px), len);
+    }
     Status finish() { return pipe->finish(out); }
     Out output() const {
         Out o;
@@ -406,7 +427,8 @@ void feed_part(A& a, const Frame& f, int rows) {
 // whole output equal those of a fresh object given the same good frames (only `next` for
 // stateless stages).
 template <class A>
-void next_is_normal(A& a, const std::vector<const Frame*>& history, const Frame& next, Status begin) {
+void next_is_normal(A& a, const std::vector<const Frame*>& history, const Frame& next,
+                    Status begin) {
     const Status got = feed(a, next, begin);
     // The reference, computed once per sequence of good frames (most cases share one).
     struct Reference {
@@ -524,7 +546,8 @@ void torn_cases(const FrameSet& f) {
     if (A::max_h > 0) bad.push_back({w, A::max_h + 1});
     for (const Size& s : bad)
         for (int mid : {0, 1}) {
-            INFO("(c) begin_frame(" << s.w << ", " << s.h << ")" << (mid ? " in the middle of a frame" : ""));
+            INFO("(c) begin_frame(" << s.w << ", " << s.h << ")"
+                                    << (mid ? " in the middle of a frame" : ""));
             A a;
             REQUIRE(feed(a, f.p) == Status::ok);
             if (mid) feed_part(a, f.t, h / 2);
@@ -565,7 +588,8 @@ TEST_CASE("torn input: TargetPipelineQvga, without and with a target", "[torn]")
     torn_cases<TargetAdapter<true>>(ground_frames());
 }
 
-TEST_CASE("torn input: a second finish() of one frame is refused and leaves the results", "[torn]") {
+TEST_CASE("torn input: a second finish() of one frame is refused and leaves the results",
+          "[torn]") {
     LineAdapter<false> a;
     const Status first = feed(a, board_frames().p);
     REQUIRE((first == Status::ok || first == Status::capacity_exceeded));

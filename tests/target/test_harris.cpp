@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/prng.h"
 #include "gradient/gradient_stage.h"
 #include "target/harris.h"
-#include "base/prng.h"
 
 using namespace qt;
 
@@ -41,10 +41,13 @@ Image rect_texture(int w, int h, uint64_t seed, int rects) {
     for (int i = 0; i < rects; ++i) {
         const int x0 = static_cast<int>(rng.below(static_cast<uint32_t>(w))),
                   y0 = static_cast<int>(rng.below(static_cast<uint32_t>(h)));
-        const int rw = 4 + static_cast<int>(rng.below(18)), rh = 4 + static_cast<int>(rng.below(18));
+        const int rw = 4 + static_cast<int>(rng.below(18)),
+                  rh = 4 + static_cast<int>(rng.below(18));
         fill_rect(im, x0, y0, x0 + rw, y0 + rh, static_cast<int>(rng.below(256)));
     }
-    for (auto& p : im.px) p = static_cast<uint8_t>(std::min(std::max(p + static_cast<int>(rng.below(5)) - 2, 0), 255));
+    for (auto& p : im.px)
+        p = static_cast<uint8_t>(
+            std::min(std::max(p + static_cast<int>(rng.below(5)) - 2, 0), 255));
     return im;
 }
 
@@ -94,7 +97,8 @@ std::vector<RefCorner> ref_harris(const Image& im, int V, int R, double floor) {
             if (!is_max) continue;
             const double l = resp[idx(x - 1, y)], rr = resp[idx(x + 1, y)];
             const double t = resp[idx(x, y - 1)], bo = resp[idx(x, y + 1)];
-            out.push_back({x, y, r, x + (l - rr) / (2 * (l - 2 * r + rr)), y + (t - bo) / (2 * (t - 2 * r + bo))});
+            out.push_back({x, y, r, x + (l - rr) / (2 * (l - 2 * r + rr)),
+                           y + (t - bo) / (2 * (t - 2 * r + bo))});
         }
     std::sort(out.begin(), out.end(), [](const RefCorner& p, const RefCorner& q) {
         if (p.response != q.response) return p.response > q.response;
@@ -115,8 +119,8 @@ HarrisConfig config(int64_t floor, int cols, int rows, int per_cell) {
 template <uint16_t MW, uint16_t MF, int R, int V>
 Status detect(HarrisDetector<MW, MF, R, V>& det, const Image& im, const HarrisConfig& c,
               FeatureSet<R, MF>& out) {
-    return detect_features(det, im.px.data(), static_cast<uint16_t>(im.w), static_cast<uint16_t>(im.h),
-                           static_cast<uint32_t>(im.w), c, out);
+    return detect_features(det, im.px.data(), static_cast<uint16_t>(im.w),
+                           static_cast<uint16_t>(im.h), static_cast<uint32_t>(im.w), c, out);
 }
 
 template <int R>
@@ -138,7 +142,8 @@ void require_q8(int32_t got, double v) {
 
 // Detector output == reference corners (position, response, patch, sub-pixel).
 template <int R, uint16_t MF>
-void require_same(const FeatureSet<R, MF>& got, const std::vector<RefCorner>& want, const Image& im) {
+void require_same(const FeatureSet<R, MF>& got, const std::vector<RefCorner>& want,
+                  const Image& im) {
     REQUIRE(got.count == want.size());
     for (size_t i = 0; i < want.size(); ++i) {
         const Feature<R>& f = got.items[i];
@@ -156,11 +161,13 @@ void require_same(const FeatureSet<R, MF>& got, const std::vector<RefCorner>& wa
 std::vector<std::vector<gradient_word>> gradient_rows(const Image& im) {
     GradientStage<256> stage;
     std::vector<std::vector<gradient_word>> rows;
-    REQUIRE(stage.begin_frame(static_cast<uint16_t>(im.w), static_cast<uint16_t>(im.h)) == Status::ok);
+    REQUIRE(stage.begin_frame(static_cast<uint16_t>(im.w), static_cast<uint16_t>(im.h)) ==
+            Status::ok);
     for (int y = 0; y < im.h; ++y)
         REQUIRE(stage.push_row(&im.px[static_cast<size_t>(y * im.w)], static_cast<uint16_t>(im.w),
-                               [&](uint16_t, const gradient_word* g, uint16_t n) { rows.emplace_back(g, g + n); }) ==
-                Status::ok);
+                               [&](uint16_t, const gradient_word* g, uint16_t n) {
+                                   rows.emplace_back(g, g + n);
+                               }) == Status::ok);
     return rows;
 }
 
@@ -226,7 +233,8 @@ TEST_CASE("Harris on a bright square: its four corners, worked by hand", "[harri
         int found[2][2] = {};
         for (uint16_t i = 0; i < 4; ++i) {
             const Feature<4>& f = out.items[i];
-            INFO("corner " << f.px << "," << f.py << " sub-pixel " << f.x_q8 / 256.0 << "," << f.y_q8 / 256.0);
+            INFO("corner " << f.px << "," << f.py << " sub-pixel " << f.x_q8 / 256.0 << ","
+                           << f.y_q8 / 256.0);
             const int right = f.px > 32, bottom = f.py > 32;
             ++found[right][bottom];
             REQUIRE(f.px == (right ? 42 : 21));
@@ -238,7 +246,8 @@ TEST_CASE("Harris on a bright square: its four corners, worked by hand", "[harri
         }
         REQUIRE((found[0][0] == 1 && found[0][1] == 1 && found[1][0] == 1 && found[1][1] == 1));
         // Strength order on equal responses: by y, then x.
-        REQUIRE((out.items[0].px == 21 && out.items[0].py == 21 && out.items[1].px == 42 && out.items[1].py == 21));
+        REQUIRE((out.items[0].px == 21 && out.items[0].py == 21 && out.items[1].px == 42 &&
+                 out.items[1].py == 21));
     }
 }
 
@@ -269,10 +278,14 @@ TEST_CASE("Harris rows in any order the contract allows give the same corners", 
         for (int y = 0; y < im.h; ++y) {
             REQUIRE(det.push_pixel_row(&im.px[static_cast<size_t>(y * im.w)], 100) == Status::ok);
             for (; next_grad <= y - lag; ++next_grad)
-                REQUIRE(det.push_gradient_row(static_cast<uint16_t>(next_grad), grads[static_cast<size_t>(next_grad)].data(), 100) == Status::ok);
+                REQUIRE(det.push_gradient_row(static_cast<uint16_t>(next_grad),
+                                              grads[static_cast<size_t>(next_grad)].data(),
+                                              100) == Status::ok);
         }
         for (; next_grad < im.h; ++next_grad)
-            REQUIRE(det.push_gradient_row(static_cast<uint16_t>(next_grad), grads[static_cast<size_t>(next_grad)].data(), 100) == Status::ok);
+            REQUIRE(det.push_gradient_row(static_cast<uint16_t>(next_grad),
+                                          grads[static_cast<size_t>(next_grad)].data(),
+                                          100) == Status::ok);
         REQUIRE(det.finish(out) == Status::ok);
         REQUIRE(out.count == ref_out.count);
         for (uint16_t i = 0; i < out.count; ++i) {
@@ -284,7 +297,8 @@ TEST_CASE("Harris rows in any order the contract allows give the same corners", 
     }
 }
 
-TEST_CASE("Harris bucketing keeps the per_cell strongest of each cell, strongest first", "[harris]") {
+TEST_CASE("Harris bucketing keeps the per_cell strongest of each cell, strongest first",
+          "[harris]") {
     const Image im = rect_texture(120, 90, 5, 40);
     const auto all = ref_harris(im, 2, 4, 1e6);
     const int cols = 4, rows = 3, per_cell = 2;
@@ -384,13 +398,16 @@ TEST_CASE("Harris row-order violations give bad_row_order and abandon the frame"
     SECTION("finish with rows missing") {
         REQUIRE(det.begin_frame(16, 8, c) == Status::ok);
         for (int y = 0; y < 8; ++y)
-            REQUIRE(det.push_pixel_row(row.data(), 16) ==
-                    (y < 3 ? Status::ok : y == 3 ? Status::bad_row_order : Status::not_in_frame));
+            REQUIRE(det.push_pixel_row(row.data(), 16) == (y < 3    ? Status::ok
+                                                           : y == 3 ? Status::bad_row_order
+                                                                    : Status::not_in_frame));
         REQUIRE(det.finish(out) == Status::not_in_frame);
         REQUIRE(det.begin_frame(16, 8, c) == Status::ok);
         for (int y = 0; y < 8; ++y) {
             REQUIRE(det.push_pixel_row(row.data(), 16) == Status::ok);
-            if (y < 7) REQUIRE(det.push_gradient_row(static_cast<uint16_t>(y), grad.data(), 16) == Status::ok);
+            if (y < 7)
+                REQUIRE(det.push_gradient_row(static_cast<uint16_t>(y), grad.data(), 16) ==
+                        Status::ok);
         }
         REQUIRE(det.push_pixel_row(row.data(), 16) == Status::not_in_frame);  // past the last
         REQUIRE(det.finish(out) == Status::not_in_frame);  // gradient row 7 missing

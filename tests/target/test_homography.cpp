@@ -7,17 +7,17 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cfloat>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "target/float/homography.h"
-#include "scene/plane_motion.h"
 #include "base/prng.h"
+#include "scene/plane_motion.h"
 #include "scene/random.h"
+#include "target/float/homography.h"
 
 using namespace qt;
 
@@ -185,8 +185,8 @@ TEST_CASE("homography_from_4 recovers a known perspective H to float precision",
     PointPair pairs[4];
     for (int i = 0; i < 4; ++i) {
         b[i] = apply64(truth, a[i].x, a[i].y);
-        pairs[i] = {static_cast<float>(a[i].x), static_cast<float>(a[i].y), static_cast<float>(b[i].x),
-                    static_cast<float>(b[i].y)};
+        pairs[i] = {static_cast<float>(a[i].x), static_cast<float>(a[i].y),
+                    static_cast<float>(b[i].x), static_cast<float>(b[i].y)};
     }
     // The reference DLT reproduces the truth (checks the reference itself).
     const H64 ref = dlt64(a, b);
@@ -215,8 +215,8 @@ TEST_CASE("homography_from_4 recovers a known perspective H to float precision",
             aa[i] = {static_cast<float>(aa[i].x), static_cast<float>(aa[i].y)};
             const P q = apply64(m, aa[i].x, aa[i].y);
             bb[i] = {static_cast<float>(q.x), static_cast<float>(q.y)};
-            pp[i] = {static_cast<float>(aa[i].x), static_cast<float>(aa[i].y), static_cast<float>(bb[i].x),
-                     static_cast<float>(bb[i].y)};
+            pp[i] = {static_cast<float>(aa[i].x), static_cast<float>(aa[i].y),
+                     static_cast<float>(bb[i].x), static_cast<float>(bb[i].y)};
         }
         Homography hh;
         if (!homography_from_4(pp, hh)) continue;  // a collinear triple: refused (tested below)
@@ -233,9 +233,9 @@ TEST_CASE("homography_from_4 recovers a known perspective H to float precision",
 }
 
 TEST_CASE("nearly_collinear: order-independent smallest-angle test", "[homography]") {
-    CHECK(nearly_collinear(0, 0, 10, 10, 20, 20, 0.01f));   // exactly on a line
-    CHECK(nearly_collinear(0, 0, 0, 0, 5, 7, 0.01f));       // two coincident points
-    CHECK(nearly_collinear(3, 3, 3, 3, 3, 3, 0.01f));       // all coincident
+    CHECK(nearly_collinear(0, 0, 10, 10, 20, 20, 0.01f));     // exactly on a line
+    CHECK(nearly_collinear(0, 0, 0, 0, 5, 7, 0.01f));         // two coincident points
+    CHECK(nearly_collinear(3, 3, 3, 3, 3, 3, 0.01f));         // all coincident
     CHECK_FALSE(nearly_collinear(0, 0, 10, 0, 0, 10, 0.5f));  // right isosceles: sin 45° = 0.71
     CHECK(nearly_collinear(0, 0, 10, 0, 0, 10, 0.75f));
     // A thin triangle: smallest angle atan(1/100) = 0.573°, sin = 0.0100. Every order gives the
@@ -244,7 +244,8 @@ TEST_CASE("nearly_collinear: order-independent smallest-angle test", "[homograph
     const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     for (const auto& p : perm) {
         CHECK(nearly_collinear(x[p[0]], y[p[0]], x[p[1]], y[p[1]], x[p[2]], y[p[2]], 0.0101f));
-        CHECK_FALSE(nearly_collinear(x[p[0]], y[p[0]], x[p[1]], y[p[1]], x[p[2]], y[p[2]], 0.0099f));
+        CHECK_FALSE(
+            nearly_collinear(x[p[0]], y[p[0]], x[p[1]], y[p[1]], x[p[2]], y[p[2]], 0.0099f));
     }
     CHECK(nearly_collinear(0, 0, NAN, 0, 0, 10, 0.01f));  // NaN counts as collinear
 }
@@ -295,7 +296,8 @@ TEST_CASE("apply, multiply and invert agree with double math; H⁻¹·H = I", "[
         REQUIRE(multiply_homographies(fa, fb, ab));
         CHECK(ab.m[8] == 1.0f);
         const H64 rab = scene::normalised64(mul64(a32, b32));
-        for (int i = 0; i < 9; ++i) CHECK(ab.m[i] == Approx(rab[i]).margin(1e-6 * (i == 2 || i == 5 ? 100 : 1)));
+        for (int i = 0; i < 9; ++i)
+            CHECK(ab.m[i] == Approx(rab[i]).margin(1e-6 * (i == 2 || i == 5 ? 100 : 1)));
         Homography inv;
         REQUIRE(invert_homography(fa, inv));
         CHECK(inv.m[8] == 1.0f);
@@ -303,7 +305,8 @@ TEST_CASE("apply, multiply and invert agree with double math; H⁻¹·H = I", "[
         REQUIRE(multiply_homographies(inv, fa, id));
         const float eye[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
         for (int i = 0; i < 9; ++i)
-            CHECK(id.m[i] == Approx(eye[i]).margin(i == 2 || i == 5 ? 1e-4 : (i >= 6 ? 1e-9 : 1e-6)));
+            CHECK(id.m[i] ==
+                  Approx(eye[i]).margin(i == 2 || i == 5 ? 1e-4 : (i >= 6 ? 1e-9 : 1e-6)));
         // The inverse maps the frame corners back within 1e-3 px.
         for (const P& c : kCorners) {
             float u = 0, v = 0, x = 0, y = 0;
@@ -340,7 +343,8 @@ TEST_CASE("apply/multiply/invert refuse points at infinity and singular matrices
     CHECK(out.m[0] == 42.0f);
 }
 
-TEST_CASE("Sampson error: zero for exact pairs, the exact equation (7) term for small errors", "[homography]") {
+TEST_CASE("Sampson error: zero for exact pairs, the exact equation (7) term for small errors",
+          "[homography]") {
     // A strong perspective, so that first-order and exact differ measurably.
     const H64 truth = {1.05, 0.08, 12, -0.06, 0.97, -7, 8e-4, -5e-4, 1};
     const Homography h = to32(truth);
@@ -351,12 +355,13 @@ TEST_CASE("Sampson error: zero for exact pairs, the exact equation (7) term for 
     for (int i = 0; i < 300; ++i) {
         const double ax = scene::uniform(rng, 0, kW), ay = scene::uniform(rng, 0, kH);
         const P b = apply64(h32, ax, ay);
-        const PointPair exact = {static_cast<float>(ax), static_cast<float>(ay), static_cast<float>(b.x),
-                                 static_cast<float>(b.y)};
+        const PointPair exact = {static_cast<float>(ax), static_cast<float>(ay),
+                                 static_cast<float>(b.x), static_cast<float>(b.y)};
         worst_exact = std::max(worst_exact, static_cast<double>(reprojection_error_sq(h, exact)));
         // Errors of 0.1-2 px on both sides.
         const double sc = scene::uniform(rng, 0.1, 1.0);
-        const PointPair p = {static_cast<float>(ax + sc * gauss.next()), static_cast<float>(ay + sc * gauss.next()),
+        const PointPair p = {static_cast<float>(ax + sc * gauss.next()),
+                             static_cast<float>(ay + sc * gauss.next()),
                              static_cast<float>(b.x + sc * gauss.next()),
                              static_cast<float>(b.y + sc * gauss.next())};
         const double ref = geometric_error_sq(h32, {p.ax, p.ay}, {p.bx, p.by});
@@ -438,11 +443,13 @@ TEST_CASE("refit_homography: exact on exact data, refuses collinear or too few",
     CHECK_FALSE(refit_homography(pairs.data(), 30, mask.data(), h));
     // All on one line: the null space is two-dimensional.
     std::vector<PointPair> line;
-    for (int i = 0; i < 20; ++i) line.push_back({10.0f + 10 * i, 20.0f + 5 * i, 12.0f + 10 * i, 21.0f + 5 * i});
+    for (int i = 0; i < 20; ++i)
+        line.push_back({10.0f + 10 * i, 20.0f + 5 * i, 12.0f + 10 * i, 21.0f + 5 * i});
     CHECK_FALSE(refit_homography(line.data(), 20, nullptr, h));
 }
 
-TEST_CASE("RANSAC recovers a known inter-frame H through noise and 0/25/50 % outliers", "[homography]") {
+TEST_CASE("RANSAC recovers a known inter-frame H through noise and 0/25/50 % outliers",
+          "[homography]") {
     RansacConfig cfg;  // 2 px, c = 0.995, 1000 iterations
     for (double frac : {0.0, 0.25, 0.5}) {
         double sum_mean = 0, worst = 0, sum_rep = 0;
@@ -465,7 +472,8 @@ TEST_CASE("RANSAC recovers a known inter-frame H through noise and 0/25/50 % out
         }
         const double mean = sum_mean / trials;
         INFO("outliers " << frac << ": mean corner error " << mean << " px, worst " << worst
-                         << " px, mean reprojection " << sum_rep / trials << " px, max iterations " << max_it);
+                         << " px, mean reprojection " << sum_rep / trials << " px, max iterations "
+                         << max_it);
         CHECK(mean <= 0.3);
         CHECK(worst <= 1.0);
         // Noise 0.5 px per coordinate on B only: Sampson ≈ |noise|²/2, mean σ² → 0.5 px (a little
@@ -509,10 +517,12 @@ TEST_CASE("RANSAC statuses: too few pairs, degenerate, no consensus", "[homograp
     CHECK(mask[0] == 0);
     CHECK(estimate_homography(nullptr, 0, cfg, nullptr).status == HomographyStatus::too_few_pairs);
     cfg.min_inliers = 20;
-    CHECK(estimate_homography(s.pairs.data(), 10, cfg, nullptr).status == HomographyStatus::too_few_pairs);
+    CHECK(estimate_homography(s.pairs.data(), 10, cfg, nullptr).status ==
+          HomographyStatus::too_few_pairs);
     // Every point on one line: every sample has a collinear triple.
     std::vector<PointPair> line;
-    for (int i = 0; i < 40; ++i) line.push_back({5.0f + 7 * i, 3.0f + 5 * i, 6.0f + 7 * i, 2.0f + 5 * i});
+    for (int i = 0; i < 40; ++i)
+        line.push_back({5.0f + 7 * i, 3.0f + 5 * i, 6.0f + 7 * i, 2.0f + 5 * i});
     cfg = RansacConfig{};
     cfg.max_iterations = 300;
     r = estimate_homography(line.data(), 40, cfg, nullptr);
@@ -524,8 +534,10 @@ TEST_CASE("RANSAC statuses: too few pairs, degenerate, no consensus", "[homograp
     Pcg32 rng(5);
     std::vector<PointPair> junk;
     for (int i = 0; i < 100; ++i)
-        junk.push_back({static_cast<float>(scene::uniform(rng, 0, kW)), static_cast<float>(scene::uniform(rng, 0, kH)),
-                        static_cast<float>(scene::uniform(rng, 0, kW)), static_cast<float>(scene::uniform(rng, 0, kH))});
+        junk.push_back({static_cast<float>(scene::uniform(rng, 0, kW)),
+                        static_cast<float>(scene::uniform(rng, 0, kH)),
+                        static_cast<float>(scene::uniform(rng, 0, kW)),
+                        static_cast<float>(scene::uniform(rng, 0, kH))});
     cfg = RansacConfig{};
     cfg.min_inliers = 20;
     std::vector<uint8_t> jm(100, 9);
@@ -535,5 +547,6 @@ TEST_CASE("RANSAC statuses: too few pairs, degenerate, no consensus", "[homograp
     CHECK(r.inliers < 20);
     CHECK(r.iterations == 1000);  // w = r.inliers/100 never bounds N below 1000
     CHECK(std::count(jm.begin(), jm.end(), 0) == 100);
-    CHECK(std::string(homography_status_name(HomographyStatus::no_consensus)).find("consensus") != std::string::npos);
+    CHECK(std::string(homography_status_name(HomographyStatus::no_consensus)).find("consensus") !=
+          std::string::npos);
 }

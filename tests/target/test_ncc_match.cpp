@@ -1,5 +1,5 @@
-// Zero-mean NCC in Q15 (core/target/ncc_match.h) against the double formula, hand-worked blocks, and
-// corner matching between a textured frame and the same frame shifted.
+// Zero-mean NCC in Q15 (core/target/ncc_match.h) against the double formula, hand-worked blocks,
+// and corner matching between a textured frame and the same frame shifted.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/prng.h"
 #include "target/harris.h"
 #include "target/ncc_match.h"
-#include "base/prng.h"
 
 using namespace qt;
 
@@ -22,7 +22,8 @@ struct RefNcc {
     bool flat;
     bool near_half;  // 32768·r within 0.01 of a half: rounding may go either way
 };
-RefNcc ref_ncc(const uint8_t* a, int as, const uint8_t* b, int bs, int w, int h, double min_variance) {
+RefNcc ref_ncc(const uint8_t* a, int as, const uint8_t* b, int bs, int w, int h,
+               double min_variance) {
     const double n = w * h;
     double ma = 0, mb = 0;
     for (int y = 0; y < h; ++y)
@@ -40,7 +41,8 @@ RefNcc ref_ncc(const uint8_t* a, int as, const uint8_t* b, int bs, int w, int h,
             aa += da * da;
             bb += db * db;
         }
-    if (aa == 0 || bb == 0 || aa / n < min_variance || bb / n < min_variance) return {0, true, false};
+    if (aa == 0 || bb == 0 || aa / n < min_variance || bb / n < min_variance)
+        return {0, true, false};
     const double x = 32768 * ab / std::sqrt(aa * bb), q = std::round(x);
     return {static_cast<int>(std::min(32767.0, std::max(-32768.0, q))), false,
             std::abs(std::abs(x - std::floor(x)) - 0.5) < 0.01};
@@ -60,7 +62,8 @@ std::vector<uint8_t> noise_texture(int w, int h, uint64_t seed) {
             int sum = 0;
             for (int v = -1; v <= 1; ++v)
                 for (int u = -1; u <= 1; ++u) {
-                    const int xx = std::min(std::max(x + u, 0), w - 1), yy = std::min(std::max(y + v, 0), h - 1);
+                    const int xx = std::min(std::max(x + u, 0), w - 1),
+                              yy = std::min(std::max(y + v, 0), h - 1);
                     sum += a[static_cast<size_t>(yy * w + xx)];
                 }
             b[static_cast<size_t>(y * w + x)] = sum;
@@ -68,7 +71,8 @@ std::vector<uint8_t> noise_texture(int w, int h, uint64_t seed) {
             hi = std::max(hi, sum);
         }
     std::vector<uint8_t> im(a.size());
-    for (size_t i = 0; i < im.size(); ++i) im[i] = static_cast<uint8_t>((b[i] - lo) * 255 / (hi - lo));
+    for (size_t i = 0; i < im.size(); ++i)
+        im[i] = static_cast<uint8_t>((b[i] - lo) * 255 / (hi - lo));
     return im;
 }
 
@@ -76,7 +80,9 @@ std::vector<uint8_t> noise_texture(int w, int h, uint64_t seed) {
 std::vector<uint8_t> crop(const std::vector<uint8_t>& frame, int fw, int x0, int y0, int w, int h) {
     std::vector<uint8_t> out(static_cast<size_t>(w * h));
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) out[static_cast<size_t>(y * w + x)] = frame[static_cast<size_t>((y0 + y) * fw + x0 + x)];
+        for (int x = 0; x < w; ++x)
+            out[static_cast<size_t>(y * w + x)] =
+                frame[static_cast<size_t>((y0 + y) * fw + x0 + x)];
     return out;
 }
 
@@ -100,8 +106,8 @@ Feature<4> patch_feature(int px, int py, const std::vector<uint8_t>& patch) {
 }
 
 uint16_t sum_of(const MatchStats& s, uint16_t matched) {
-    return static_cast<uint16_t>(s.flat + s.no_candidate + s.below_min + s.ambiguous + s.not_mutual +
-                                 s.dropped_capacity + matched);
+    return static_cast<uint16_t>(s.flat + s.no_candidate + s.below_min + s.ambiguous +
+                                 s.not_mutual + s.dropped_capacity + matched);
 }
 
 }  // namespace
@@ -110,24 +116,28 @@ TEST_CASE("NCC equals the double formula within 1 in Q15", "[ncc]") {
     Pcg32 rng(77);
     int worst = 0;
     for (int trial = 0; trial < 3000; ++trial) {
-        const int w = 1 + static_cast<int>(rng.below(32)), h = 1 + static_cast<int>(rng.below(static_cast<uint32_t>(1024 / w)));
+        const int w = 1 + static_cast<int>(rng.below(32)),
+                  h = 1 + static_cast<int>(rng.below(static_cast<uint32_t>(1024 / w)));
         const int as = w + static_cast<int>(rng.below(5)), bs = w + static_cast<int>(rng.below(5));
         std::vector<uint8_t> a(static_cast<size_t>(as * h)), b(static_cast<size_t>(bs * h));
-        const int kind = trial % 4;  // 0 independent, 1 correlated, 2 anti-correlated, 3 binary 0/255
+        const int kind =
+            trial % 4;  // 0 independent, 1 correlated, 2 anti-correlated, 3 binary 0/255
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
-                const int v = static_cast<int>(rng.below(256)), noise = static_cast<int>(rng.below(61)) - 30;
+                const int v = static_cast<int>(rng.below(256)),
+                          noise = static_cast<int>(rng.below(61)) - 30;
                 uint8_t& pa = a[static_cast<size_t>(y * as + x)];
                 uint8_t& pb = b[static_cast<size_t>(y * bs + x)];
                 pa = kind == 3 ? static_cast<uint8_t>(rng.below(2) * 255) : static_cast<uint8_t>(v);
-                pb = kind == 0 ? static_cast<uint8_t>(rng.below(256))
-                   : kind == 1 ? clamp8(v + noise)
-                   : kind == 2 ? clamp8(255 - v + noise)
-                               : static_cast<uint8_t>(rng.below(8) == 0 ? 255 - pa : pa);
+                pb = kind == 0   ? static_cast<uint8_t>(rng.below(256))
+                     : kind == 1 ? clamp8(v + noise)
+                     : kind == 2 ? clamp8(255 - v + noise)
+                                 : static_cast<uint8_t>(rng.below(8) == 0 ? 255 - pa : pa);
             }
         const RefNcc want = ref_ncc(a.data(), as, b.data(), bs, w, h, 4);
-        const NccScore got = ncc_q15(a.data(), static_cast<uint32_t>(as), b.data(), static_cast<uint32_t>(bs),
-                                     static_cast<uint16_t>(w), static_cast<uint16_t>(h));
+        const NccScore got =
+            ncc_q15(a.data(), static_cast<uint32_t>(as), b.data(), static_cast<uint32_t>(bs),
+                    static_cast<uint16_t>(w), static_cast<uint16_t>(h));
         INFO("trial " << trial << " " << w << "x" << h);
         REQUIRE(got.flat == want.flat);
         // The root carries 32 significant bits: the quotient is exact to ~10^-4 before
@@ -147,10 +157,11 @@ TEST_CASE("NCC hand-worked blocks", "[ncc]") {
     for (size_t i = 0; i < 81; ++i) {
         p[i] = static_cast<uint8_t>(20 + rng.below(101));  // 20..120
         neg[i] = static_cast<uint8_t>(255 - p[i]);
-        affine[i] = clamp8((p[i] + 1) / 2 + 60);  // a·p + b rounded
+        affine[i] = clamp8((p[i] + 1) / 2 + 60);           // a·p + b rounded
         doubled[i] = static_cast<uint8_t>(2 * p[i] - 40);  // exact
     }
-    auto score = [](const std::vector<uint8_t>& x, const std::vector<uint8_t>& y, uint32_t min_var = kNccMinVariance) {
+    auto score = [](const std::vector<uint8_t>& x, const std::vector<uint8_t>& y,
+                    uint32_t min_var = kNccMinVariance) {
         return ncc_q15(x.data(), 9, y.data(), 9, 9, 9, min_var);
     };
     REQUIRE(score(p, p).q15 == 32767);
@@ -243,8 +254,10 @@ TEST_CASE("Matching refuses a repeated pattern by the margin check", "[ncc]") {
             for (int x = 0; x < w; ++x) {
                 const int u = ((x - dx) % period + period) % period, v = y % period;
                 const int cell = ((x - dx) / period + y / period) % 3;
-                const bool on = (u >= 4 && u < 10 && v >= 4 && v < 7) || (u >= 4 && u < 7 && v >= 4 && v < 12);
-                im[static_cast<size_t>(y * w + x)] = static_cast<uint8_t>(on ? 150 + 30 * cell : 60);
+                const bool on =
+                    (u >= 4 && u < 10 && v >= 4 && v < 7) || (u >= 4 && u < 7 && v >= 4 && v < 12);
+                im[static_cast<size_t>(y * w + x)] =
+                    static_cast<uint8_t>(on ? 150 + 30 * cell : 60);
             }
         return im;
     };
@@ -256,14 +269,16 @@ TEST_CASE("Matching refuses a repeated pattern by the margin check", "[ncc]") {
     MatchStats st;
     const uint16_t n = match_features(prev, cur, MatchConfig{}, m, 96, &st);
     REQUIRE(st.ambiguous >= prev.count / 2);
-    for (uint16_t k = 0; k < n; ++k) REQUIRE(cur.items[m[k].cur].px - prev.items[m[k].prev].px == 3);
+    for (uint16_t k = 0; k < n; ++k)
+        REQUIRE(cur.items[m[k].cur].px - prev.items[m[k].prev].px == 3);
     // Without the margin and mutual checks the first of the equal candidates wins: wrong pairs.
     MatchConfig loose;
     loose.min_margin_q15 = 0;
     loose.mutual = false;
     const uint16_t n_loose = match_features(prev, cur, loose, m, 96);
     int wrong = 0;
-    for (uint16_t k = 0; k < n_loose; ++k) wrong += cur.items[m[k].cur].px - prev.items[m[k].prev].px != 3;
+    for (uint16_t k = 0; k < n_loose; ++k)
+        wrong += cur.items[m[k].cur].px - prev.items[m[k].prev].px != 3;
     REQUIRE(wrong > 0);
 }
 
@@ -292,9 +307,9 @@ TEST_CASE("Matching: mutual check, flat patches, thresholds", "[ncc]") {
     c.min_score_q15 = 16384;
     REQUIRE(match_features(prev, cur, c, m, 8, &st) == 1);
     REQUIRE((m[0].prev == 0 && m[0].cur == 0 && m[0].score_q15 == 32767));
-    REQUIRE(st.not_mutual == 1);   // prev 1's best is cur 0, whose best is prev 0
-    REQUIRE(st.flat == 1);         // prev 2
-    REQUIRE(st.no_candidate == 1); // prev 3: cur 1 is 25 px away
+    REQUIRE(st.not_mutual == 1);    // prev 1's best is cur 0, whose best is prev 0
+    REQUIRE(st.flat == 1);          // prev 2
+    REQUIRE(st.no_candidate == 1);  // prev 3: cur 1 is 25 px away
     REQUIRE(st.scored == 2);
     c.mutual = false;
     REQUIRE(match_features(prev, cur, c, m, 8, &st) == 2);

@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "scene/ground_sequence.h"
 #include "demo/target_runner.h"
+#include "scene/ground_sequence.h"
 
 using qt::TargetMethod;
 using qt::TargetState;
@@ -28,26 +28,34 @@ Errors errors(const std::vector<TargetRunFrame>& run, int back) {
     Errors e;
     for (size_t k = 0; k < run.size(); ++k) {
         const TargetRunFrame& f = run[k];
-        if (f.truth.occluded) e.flare = std::max(e.flare, f.error_px);
-        else if (!f.truth.in_view) e.out = std::max(e.out, f.error_px);
-        else if (static_cast<int>(k) >= back + 2) e.after = std::max(e.after, f.error_px);
-        else e.visible = std::max(e.visible, f.error_px);
+        if (f.truth.occluded)
+            e.flare = std::max(e.flare, f.error_px);
+        else if (!f.truth.in_view)
+            e.out = std::max(e.out, f.error_px);
+        else if (static_cast<int>(k) >= back + 2)
+            e.after = std::max(e.after, f.error_px);
+        else
+            e.visible = std::max(e.visible, f.error_px);
     }
     return e;
 }
 
 }  // namespace
 
-TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-view spell", "[target][sequence]") {
+TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-view spell",
+          "[target][sequence]") {
     const qt::scene::GroundSequenceConfig cfg = qt::scene::short_ground_sequence();
     const qt::scene::GroundSequence seq(cfg);
     std::vector<qt::io::GreyImage> frames;
     for (int k = 0; k < seq.frames(); ++k) frames.push_back(seq.render(k));
-    const int out_first = cfg.out_of_view_start, back = cfg.out_of_view_start + cfg.out_of_view_frames;
+    const int out_first = cfg.out_of_view_start,
+              back = cfg.out_of_view_start + cfg.out_of_view_frames;
 
-    const auto fused = qt::cli::run_target_sequence(seq, qt::cli::qvga_target_config(TargetMethod::fused), &frames);
+    const auto fused = qt::cli::run_target_sequence(
+        seq, qt::cli::qvga_target_config(TargetMethod::fused), &frames);
     const Errors f = errors(fused, back);
-    INFO("fused: visible " << f.visible << ", flare " << f.flare << ", out " << f.out << ", after " << f.after);
+    INFO("fused: visible " << f.visible << ", flare " << f.flare << ", out " << f.out << ", after "
+                           << f.after);
     CHECK(f.visible < 1.5);
     CHECK(f.flare < 3.0);
     CHECK(f.out < 4.0);
@@ -58,9 +66,11 @@ TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-
         CHECK(fused[static_cast<size_t>(k)].result.estimate.state == TargetState::predicted);
     int out_of_view = 0, reacquired_at = -1;
     for (int k = out_first; k < back; ++k)
-        out_of_view += fused[static_cast<size_t>(k)].result.estimate.state == TargetState::out_of_view;
+        out_of_view +=
+            fused[static_cast<size_t>(k)].result.estimate.state == TargetState::out_of_view;
     for (int k = back; k < seq.frames() && reacquired_at < 0; ++k)
-        if (fused[static_cast<size_t>(k)].result.estimate.state == TargetState::reacquired) reacquired_at = k;
+        if (fused[static_cast<size_t>(k)].result.estimate.state == TargetState::reacquired)
+            reacquired_at = k;
     CHECK(out_of_view >= cfg.out_of_view_frames - 4);  // the box leaves before its centre does
     CHECK(reacquired_at >= back);
     CHECK(reacquired_at <= back + 2);
@@ -68,7 +78,8 @@ TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-
 
     // Homography only: the start carried by the accumulated homography, the target's own motion
     // (0.2 m a frame) unaccounted for.
-    const auto homography = qt::cli::run_target_sequence(seq, qt::cli::qvga_target_config(TargetMethod::homography_only), &frames);
+    const auto homography = qt::cli::run_target_sequence(
+        seq, qt::cli::qvga_target_config(TargetMethod::homography_only), &frames);
     const Errors h = errors(homography, back);
     INFO("homography only: out " << h.out << ", after " << h.after);
     CHECK(h.out > 3 * f.out);
@@ -76,7 +87,8 @@ TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-
 
     // Filter only: no camera motion model; once the camera swings away it keeps predicting in
     // image coordinates and never finds the target again.
-    const auto filter = qt::cli::run_target_sequence(seq, qt::cli::qvga_target_config(TargetMethod::filter_only), &frames);
+    const auto filter = qt::cli::run_target_sequence(
+        seq, qt::cli::qvga_target_config(TargetMethod::filter_only), &frames);
     const Errors k = errors(filter, back);
     INFO("filter only: out " << k.out << ", after " << k.after);
     CHECK(k.after > 20.0);

@@ -1,20 +1,21 @@
 // The target tracker (filtering-geometry.txt §III, Tables II and III): its float Kalman filter
-// (core/target/float/target_kalman.h) against an independent double-precision 4×4 filter written here from
-// the textbook equations, change_frame() against exact scalings and a finite-difference
+// (core/target/float/target_kalman.h) against an independent double-precision 4×4 filter written
+// here from the textbook equations, change_frame() against exact scalings and a finite-difference
 // Jacobian, the fused tracker's states, gates, reset and lost rules on hand-worked frames
 // (core/target/float/target_tracker.h), the comparison methods, and match_displacement_q8
-// (core/target/float/frame_homography.h) on patches rendered from a smooth function at sub-pixel shifts.
+// (core/target/float/frame_homography.h) on patches rendered from a smooth function at sub-pixel
+// shifts.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
-#include "target/float/frame_homography.h"
-#include "target/float/homography.h"
-#include "support/matrix_reference.h"
 #include "base/prng.h"
 #include "scene/random.h"
+#include "support/matrix_reference.h"
+#include "target/float/frame_homography.h"
+#include "target/float/homography.h"
 #include "target/float/target_kalman.h"
 #include "target/float/target_tracker.h"
 
@@ -96,7 +97,8 @@ struct Deviation {
     void add(const TargetKalman& kf, const RefKalman& ref) {
         for (int i = 0; i < 4; ++i) {
             const double want = ref.x.m[i][0];
-            state = std::max(state, std::abs(kf_state(kf, i) - want) / std::max(std::abs(want), 1.0));
+            state =
+                std::max(state, std::abs(kf_state(kf, i) - want) / std::max(std::abs(want), 1.0));
             for (int j = 0; j < 4; ++j) {
                 const double scale = std::sqrt(ref.p.m[i][i] * ref.p.m[j][j]);
                 cov = std::max(cov, std::abs(kf.p(i, j) - ref.p.m[i][j]) / scale);
@@ -120,7 +122,8 @@ void compare_with_reference(const TargetKalmanParams& params, uint64_t seed) {
         vy += 0.3 * g.next();
         tx += vx;
         ty += vy;
-        const float zx = static_cast<float>(tx + 2 * g.next()), zy = static_cast<float>(ty + 2 * g.next());
+        const float zx = static_cast<float>(tx + 2 * g.next()),
+                    zy = static_cast<float>(ty + 2 * g.next());
         kf.predict();
         ref.predict();
         dev.add(kf, ref);
@@ -133,8 +136,8 @@ void compare_with_reference(const TargetKalmanParams& params, uint64_t seed) {
         ref.update(zx, zy);
         dev.add(kf, ref);
     }
-    WARN("TargetKalman vs double: worst relative deviation: state " << dev.state << ", P " << dev.cov
-                                                                   << ", NDS " << worst_nds << ", det S " << worst_det);
+    WARN("TargetKalman vs double: worst relative deviation: state "
+         << dev.state << ", P " << dev.cov << ", NDS " << worst_nds << ", det S " << worst_det);
     CHECK(dev.state < 1e-4);
     CHECK(dev.cov < 1e-4);
     CHECK(worst_nds < 1e-4);
@@ -151,7 +154,9 @@ Homography make_h(float h1, float h2, float h3, float h4, float h5, float h6, fl
 }
 Homography translation(float tx, float ty) { return make_h(1, 0, tx, 0, 1, ty, 0, 0); }
 // Scaling by s about (cx, cy).
-Homography scaling(float s, float cx, float cy) { return make_h(s, 0, cx * (1 - s), 0, s, cy * (1 - s), 0, 0); }
+Homography scaling(float s, float cx, float cy) {
+    return make_h(s, 0, cx * (1 - s), 0, s, cy * (1 - s), 0, 0);
+}
 
 FrameGeometry geometry(const Homography& h, float rep = 0.3f, bool valid = true) {
     FrameGeometry g;
@@ -271,7 +276,8 @@ TEST_CASE("TargetKalman::change_frame: translation, scaling and a general homogr
         for (int r = 0; r < 4; ++r)
             for (int c = 0; c < 4; ++c) {
                 INFO("P(" << r << ", " << c << ")");
-                CHECK(std::abs(kf.p(r, c) - want[r][c]) <= 1e-4 * std::sqrt(want[r][r] * want[c][c]));
+                CHECK(std::abs(kf.p(r, c) - want[r][c]) <=
+                      1e-4 * std::sqrt(want[r][r] * want[c][c]));
             }
         // homography_jacobian itself against the finite differences.
         float jf[4];
@@ -283,7 +289,10 @@ TEST_CASE("TargetKalman::change_frame: translation, scaling and a general homogr
     }
 }
 
-TEST_CASE("TargetTracker fused: a stationary target carried by translations, out of view, reacquired, reset", "[target]") {
+TEST_CASE(
+    "TargetTracker fused: a stationary target carried by translations, out of view, reacquired, "
+    "reset",
+    "[target]") {
     // Q = diag(1, 1, 0.01, 0.01) and reset_det_s = 400 (set here, not the default): det S
     // starts far above 400 after the frames unseen and falls below it after a few measurements.
     TargetTrackerParams params;
@@ -363,7 +372,8 @@ TEST_CASE("TargetTracker fused: a stationary target carried by translations, out
     CHECK(copy.accumulated().m[2] == -2.0f);
 }
 
-TEST_CASE("TargetTracker fused with the default parameters resets on a perfect measurement", "[target]") {
+TEST_CASE("TargetTracker fused with the default parameters resets on a perfect measurement",
+          "[target]") {
     // Table III: reset when D_nds and det S are "reasonably small". Defaults: Q = diag(20, 20,
     // 1, 1), r = 4. After predict, S = H P̄ Hᵀ + R with P̄ = Φ P Φᵀ + Q, so S − (q_pos + r) I
     // is positive semi-definite and det S >= (20 + 4)² = 576 for every state (J = I here): the
@@ -381,7 +391,8 @@ TEST_CASE("TargetTracker fused with the default parameters resets on a perfect m
         min_det = std::min(min_det, e.det_s);
         reset_seen = reset_seen || e.reset;
     }
-    INFO("smallest det S " << min_det << " px^4, reset_det_s " << TargetTrackerParams{}.reset_det_s);
+    INFO("smallest det S " << min_det << " px^4, reset_det_s "
+                           << TargetTrackerParams{}.reset_det_s);
     CHECK(min_det >= 576.0f);
     CHECK(reset_seen);
 }
@@ -401,7 +412,7 @@ TEST_CASE("TargetTracker gates: NDS, reprojection error, score", "[target]") {
         CHECK(e.nds == Approx(78.125));
         CHECK(e.state == TargetState::predicted);
         CHECK(e.unseen == 1);
-        CHECK(e.x == 100.0f);  // the estimate did not move
+        CHECK(e.x == 100.0f);                                     // the estimate did not move
         e = first_frame(geometry(Homography{}), seen(100, 118));  // 324/32 = 10.125 > 9.21
         CHECK(e.nds == Approx(10.125));
         CHECK(e.state == TargetState::predicted);
@@ -450,7 +461,8 @@ TEST_CASE("TargetTracker lost rules: unseen, bad geometry, implausible accumulat
         for (int k = 1; k <= params.max_unseen; ++k) {
             t.predict(geometry(Homography{}));
             const TargetEstimate e = t.update(kNone);
-            if (e.state != TargetState::predicted) FAIL("frame " << k << ": " << target_state_name(e.state));
+            if (e.state != TargetState::predicted)
+                FAIL("frame " << k << ": " << target_state_name(e.state));
         }
         t.predict(geometry(Homography{}));
         CHECK(t.update(kNone).state == TargetState::lost);  // frame max_unseen + 1
@@ -567,10 +579,12 @@ namespace {
 
 // A smooth texture in double: a few sinusoids at 0.3–0.6 rad/px in different directions.
 double texture(double x, double y) {
-    return 128 + 45 * std::sin(0.55 * x + 0.2 * y + 0.3) + 40 * std::sin(-0.25 * x + 0.5 * y + 1.1) +
-           25 * std::sin(0.35 * x + 0.4 * y + 2.0);
+    return 128 + 45 * std::sin(0.55 * x + 0.2 * y + 0.3) +
+           40 * std::sin(-0.25 * x + 0.5 * y + 1.1) + 25 * std::sin(0.35 * x + 0.4 * y + 2.0);
 }
-uint8_t grey(double v) { return static_cast<uint8_t>(std::lround(std::min(255.0, std::max(0.0, v)))); }
+uint8_t grey(double v) {
+    return static_cast<uint8_t>(std::lround(std::min(255.0, std::max(0.0, v))));
+}
 
 // A feature on pixel (px, py) whose 9×9 patch samples f(x − dx, y − dy): the content of f moved
 // by (dx, dy).
@@ -617,12 +631,16 @@ TEST_CASE("match_displacement_q8 refuses a flat patch and vertical stripes", "[t
     int32_t qx = 0, qy = 0;
     // Flat: Σ E Eᵀ = 0.
     auto flat = [](double, double) { return 90.0; };
-    CHECK_FALSE(match_displacement_q8(feature_at(10, 10, 0, 0, flat), feature_at(10, 10, 0.3, 0, flat), qx, qy));
+    CHECK_FALSE(match_displacement_q8(feature_at(10, 10, 0, 0, flat),
+                                      feature_at(10, 10, 0.3, 0, flat), qx, qy));
     // Vertical stripes vary in x only: E_y = 0, det Σ E Eᵀ = 0 (the aperture problem).
     auto stripes = [](double x, double) { return 128 + 80 * std::sin(0.6 * x); };
     CHECK_FALSE(match_displacement_q8(feature_at(10, 10, 0, 0, stripes),
                                       feature_at(10, 10, 0.3, 0.2, stripes), qx, qy));
     // The same stripes with a weak horizontal component are accepted (the test is not vacuous).
-    auto plaid = [](double x, double y) { return 128 + 80 * std::sin(0.6 * x) + 40 * std::sin(0.5 * y); };
-    CHECK(match_displacement_q8(feature_at(10, 10, 0, 0, plaid), feature_at(10, 10, 0.3, 0.2, plaid), qx, qy));
+    auto plaid = [](double x, double y) {
+        return 128 + 80 * std::sin(0.6 * x) + 40 * std::sin(0.5 * y);
+    };
+    CHECK(match_displacement_q8(feature_at(10, 10, 0, 0, plaid),
+                                feature_at(10, 10, 0.3, 0.2, plaid), qx, qy));
 }

@@ -1,6 +1,6 @@
-// Template search for the target tracker (core/target/template_search.h): exact hits on textures that
-// make the answer exact, the candidate centres counted and clipped by hand, sub-pixel hits on a
-// smooth texture rendered at known shifts, cut_template's refusals and RegionCapture's clipping
+// Template search for the target tracker (core/target/template_search.h): exact hits on textures
+// that make the answer exact, the candidate centres counted and clipped by hand, sub-pixel hits on
+// a smooth texture rendered at known shifts, cut_template's refusals and RegionCapture's clipping
 // against the source frame.
 #include <catch2/catch.hpp>
 
@@ -53,21 +53,22 @@ PixelRegion part(const std::vector<uint8_t>& img, int stride, int x0, int y0, in
 
 // A smooth texture in double, rendered with its content moved by (dx, dy).
 double texture(double x, double y) {
-    return 128 + 50 * std::sin(0.45 * x + 0.15 * y + 0.4) + 40 * std::sin(-0.2 * x + 0.5 * y + 1.3) +
-           20 * std::sin(0.3 * x + 0.35 * y + 2.2);
+    return 128 + 50 * std::sin(0.45 * x + 0.15 * y + 0.4) +
+           40 * std::sin(-0.2 * x + 0.5 * y + 1.3) + 20 * std::sin(0.3 * x + 0.35 * y + 2.2);
 }
 std::vector<uint8_t> render(int w, int h, double dx, double dy) {
     std::vector<uint8_t> img(static_cast<size_t>(w * h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            img[static_cast<size_t>(y * w + x)] =
-                static_cast<uint8_t>(std::lround(std::min(255.0, std::max(0.0, texture(x - dx, y - dy)))));
+            img[static_cast<size_t>(y * w + x)] = static_cast<uint8_t>(
+                std::lround(std::min(255.0, std::max(0.0, texture(x - dx, y - dy)))));
     return img;
 }
 
 }  // namespace
 
-TEST_CASE("search_template finds a cut template exactly, counts and clips its candidates", "[template]") {
+TEST_CASE("search_template finds a cut template exactly, counts and clips its candidates",
+          "[template]") {
     SECTION("odd template 7×7 centred on pixel (20, 20) of a 41×41 image") {
         const std::vector<uint8_t> img = symmetric_noise(41, 41, 3);
         const PixelRegion region = whole(img, 41, 41);
@@ -154,8 +155,8 @@ TEST_CASE("search_template sub-pixel: a smooth texture shifted by 0.25 and 0.5 p
     const std::vector<uint8_t> ref = render(64, 48, 0, 0);
     TargetTemplate<16> t;
     REQUIRE(cut_template(whole(ref, 64, 48), 20, 18, 11, 11, t));
-    const double shifts[][2] = {{0.25, 0}, {0, 0.25}, {0.5, 0}, {0, 0.5}, {0.25, -0.25},
-                                {-0.5, 0.5}, {0.5, 0.25}, {-0.25, -0.5}};
+    const double shifts[][2] = {{0.25, 0},     {0, 0.25},   {0.5, 0},    {0, 0.5},
+                                {0.25, -0.25}, {-0.5, 0.5}, {0.5, 0.25}, {-0.25, -0.5}};
     double worst_truth = 0, worst_ref = 0;
     for (const auto& s : shifts) {
         const std::vector<uint8_t> frame = render(64, 48, s[0], s[1]);
@@ -175,7 +176,8 @@ TEST_CASE("search_template sub-pixel: a smooth texture shifted by 0.25 and 0.5 p
             double ab = 0, aa = 0, bb = 0;
             for (int y = 0; y < 11; ++y)
                 for (int x = 0; x < 11; ++x) {
-                    const double da = t.pixels[y * 11 + x] - ma, db = frame[static_cast<size_t>((v + y) * 64 + u + x)] - mb;
+                    const double da = t.pixels[y * 11 + x] - ma,
+                                 db = frame[static_cast<size_t>((v + y) * 64 + u + x)] - mb;
                     ab += da * db;
                     aa += da * da;
                     bb += db * db;
@@ -198,8 +200,8 @@ TEST_CASE("search_template sub-pixel: a smooth texture shifted by 0.25 and 0.5 p
         const double rx = bu + 5 + vertex(ncc(bu - 1, bv), best, ncc(bu + 1, bv));
         const double ry = bv + 5 + vertex(ncc(bu, bv - 1), best, ncc(bu, bv + 1));
         const double fx = hit.x_q8 / 256.0, fy = hit.y_q8 / 256.0;
-        INFO("shift (" << s[0] << ", " << s[1] << "): found (" << fx << ", " << fy << "), reference ("
-                       << rx << ", " << ry << ")");
+        INFO("shift (" << s[0] << ", " << s[1] << "): found (" << fx << ", " << fy
+                       << "), reference (" << rx << ", " << ry << ")");
         REQUIRE(hit.found);
         CHECK(hit.positions == 121);
         CHECK(hit.score_q15 > 32000);
@@ -223,10 +225,12 @@ TEST_CASE("search_template sub-pixel: a smooth texture shifted by 0.25 and 0.5 p
         }
     }
     WARN("search_template sub-pixel: worst error " << worst_truth << " px against the truth, "
-                                                   << worst_ref << " px against the double reference");
+                                                   << worst_ref
+                                                   << " px against the double reference");
 }
 
-TEST_CASE("cut_template refuses boxes outside the region or too large; copies the pixels", "[template]") {
+TEST_CASE("cut_template refuses boxes outside the region or too large; copies the pixels",
+          "[template]") {
     Pcg32 rng(9);
     std::vector<uint8_t> img(64 * 48);
     for (auto& v : img) v = static_cast<uint8_t>(rng.below(256));
@@ -239,17 +243,19 @@ TEST_CASE("cut_template refuses boxes outside the region or too large; copies th
     CHECK_FALSE(cut_template(region, 10, 5, 9, 4, t));   // wider than MaxSide = 8
     CHECK_FALSE(cut_template(region, 10, 5, 4, 9, t));   // taller than MaxSide
     CHECK_FALSE(cut_template(region, 10, 5, 0, 4, t));   // empty
-    CHECK(t.w == 0);                                      // untouched by every refusal
+    CHECK(t.w == 0);                                     // untouched by every refusal
     // The last column and row that fit: top-left (36, 21), 4 × 4, ends at 39, 24.
     REQUIRE(cut_template(region, 36, 21, 4, 4, t));
-    REQUIRE(cut_template(region, 31, 17, 8, 8, t));      // MaxSide itself
+    REQUIRE(cut_template(region, 31, 17, 8, 8, t));  // MaxSide itself
     CHECK(t.w == 8);
     CHECK(t.h == 8);
     for (int r = 0; r < 8; ++r)
-        for (int c = 0; c < 8; ++c) CHECK(t.pixels[r * 8 + c] == img[static_cast<size_t>((17 + r) * 64 + 31 + c)]);
+        for (int c = 0; c < 8; ++c)
+            CHECK(t.pixels[r * 8 + c] == img[static_cast<size_t>((17 + r) * 64 + 31 + c)]);
 }
 
-TEST_CASE("RegionCapture keeps the clipped box's rows and columns of the streamed frame", "[template]") {
+TEST_CASE("RegionCapture keeps the clipped box's rows and columns of the streamed frame",
+          "[template]") {
     constexpr int W = 64, H = 48;
     Pcg32 rng(13);
     std::vector<uint8_t> frame(W * H);
@@ -261,7 +267,9 @@ TEST_CASE("RegionCapture keeps the clipped box's rows and columns of the streame
     auto same_as_frame = [&](const PixelRegion& r) {
         for (int y = 0; y < r.h; ++y)
             for (int x = 0; x < r.w; ++x)
-                if (r.pixels[y * r.stride + x] != frame[static_cast<size_t>((r.y0 + y) * W + r.x0 + x)]) return false;
+                if (r.pixels[y * r.stride + x] !=
+                    frame[static_cast<size_t>((r.y0 + y) * W + r.x0 + x)])
+                    return false;
         return true;
     };
     RegionCapture<32, 24> cap;

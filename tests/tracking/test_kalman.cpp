@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstdint>
 
-#include "tracking/kalman.h"
-#include "support/matrix_reference.h"
 #include "base/prng.h"
+#include "support/matrix_reference.h"
+#include "tracking/kalman.h"
 
 using namespace qt;
 
@@ -93,8 +93,10 @@ struct Walker {
 struct Errors {
     double pos = 0, vel = 0, cov_rel = 0;
     void add(const PointKalman& f, const RefKalman4& ref) {
-        pos = std::max({pos, std::fabs(val(f.x()) - ref.X.m[0][0]), std::fabs(val(f.y()) - ref.X.m[2][0])});
-        vel = std::max({vel, std::fabs(val(f.vx()) - ref.X.m[1][0]), std::fabs(val(f.vy()) - ref.X.m[3][0])});
+        pos = std::max(
+            {pos, std::fabs(val(f.x()) - ref.X.m[0][0]), std::fabs(val(f.y()) - ref.X.m[2][0])});
+        vel = std::max(
+            {vel, std::fabs(val(f.vx()) - ref.X.m[1][0]), std::fabs(val(f.vy()) - ref.X.m[3][0])});
         const KalmanAxis* ax[2] = {&f.axis_x(), &f.axis_y()};
         for (int k = 0; k < 2; ++k) {
             const int o = 2 * k;
@@ -103,7 +105,8 @@ struct Errors {
             for (int i = 0; i < 3; ++i)
                 cov_rel = std::max(cov_rel, std::fabs(fix[i] - ref3[i]) / std::fabs(ref3[i]));
             // Asymmetry in the reference would mean its algebra went wrong somewhere.
-            REQUIRE(std::fabs(ref.P.m[o][o + 1] - ref.P.m[o + 1][o]) <= 1e-9 * std::fabs(ref.P.m[o][o + 1]));
+            REQUIRE(std::fabs(ref.P.m[o][o + 1] - ref.P.m[o + 1][o]) <=
+                    1e-9 * std::fabs(ref.P.m[o][o + 1]));
         }
     }
 };
@@ -211,7 +214,8 @@ TEST_CASE("Kalman: a 100-frame spell of prediction agrees with the reference", "
         (coasting ? err_coast : err).add(f, ref);
         if (t == 300) {
             // After 100 predictions from the steady state: a ≈ n³/3 px², far below the ceiling.
-            INFO("Ppp after the spell " << f.axis_x().pp / kCov << " px², reference " << ref.P.m[0][0]);
+            INFO("Ppp after the spell " << f.axis_x().pp / kCov << " px², reference "
+                                        << ref.P.m[0][0]);
             REQUIRE(f.axis_x().pp / kCov > 3e5);
             REQUIRE(f.flags() == 0);
         }
@@ -242,10 +246,12 @@ TEST_CASE("Kalman: long prediction saturates at the ceiling and flags it", "[kal
         for (int n = 1; n <= 2000 && first == 0; ++n) {
             f.predict();
             // 12·Ppp(n) in exact integers (prediction is exact in fixed point).
-            const int64_t twelve_a = 6 + 1200 * static_cast<int64_t>(n) * n + 4 * static_cast<int64_t>(n) * n * n - n;
+            const int64_t twelve_a =
+                6 + 1200 * static_cast<int64_t>(n) * n + 4 * static_cast<int64_t>(n) * n * n - n;
             if (twelve_a <= 12 * (INT64_C(1) << 28)) {
                 REQUIRE(f.flags() == 0);
-                REQUIRE(static_cast<__int128>(f.axis_x().pp) * 12 == static_cast<__int128>(twelve_a) << 32);
+                REQUIRE(static_cast<__int128>(f.axis_x().pp) * 12 == static_cast<__int128>(twelve_a)
+                                                                         << 32);
             } else {
                 first = n;
             }

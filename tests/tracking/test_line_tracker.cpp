@@ -1,15 +1,15 @@
-// The line tracker (core/tracking/line_tracker.h) and its turn filter (core/tracking/turn_kalman.h) against
-// double-precision references written from the paper (§2.5–2.7) and from the turn model's
-// equations, plus hand-worked cases: exact motion is predicted exactly, the near-origin cases
-// the paper is about, and saturation over long spells without measurements.
+// The line tracker (core/tracking/line_tracker.h) and its turn filter (core/tracking/turn_kalman.h)
+// against double-precision references written from the paper (§2.5–2.7) and from the turn model's
+// equations, plus hand-worked cases: exact motion is predicted exactly, the near-origin cases the
+// paper is about, and saturation over long spells without measurements.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
-#include "tracking/line_tracker.h"
 #include "base/prng.h"
+#include "tracking/line_tracker.h"
 #include "tracking/turn_kalman.h"
 
 using namespace qt;
@@ -42,7 +42,8 @@ Segment measure(double theta, double rho, double fx, double fy, double len = 80)
     s.x2 = q16(px - ny * len / 2);
     s.y2 = q16(py + nx * len / 2);
     s.rho = q16(rho);
-    s.theta = static_cast<angle_t>(static_cast<uint64_t>(std::llround(theta / (2 * kPi) * kTurn)) & 0xFFFFFFFFu);
+    s.theta = static_cast<angle_t>(static_cast<uint64_t>(std::llround(theta / (2 * kPi) * kTurn)) &
+                                   0xFFFFFFFFu);
     s.cx = q16(rho * nx);
     s.cy = q16(rho * ny);
     return s;
@@ -75,14 +76,18 @@ struct RefAxis {
     void predict(double q) {
         x += v;
         const double a1 = a + 2 * b + c + q / 4, b1 = b + c + q / 2, c1 = c + q;
-        a = a1; b = b1; c = c1;
+        a = a1;
+        b = b1;
+        c = c1;
     }
     void update(double z, double r) {
         const double s = a + r, k1 = a / s, k2 = b / s, nu = z - x;
         x += k1 * nu;
         v += k2 * nu;
         const double a1 = a - k1 * a, b1 = b - k1 * b, c1 = c - k2 * b;
-        a = a1; b = b1; c = c1;
+        a = a1;
+        b = b1;
+        c = c1;
     }
 };
 
@@ -99,7 +104,8 @@ struct RefClosestPoints {
         }
     }
     void closest(const Segment& m, int i, double& cx, double& cy) const {
-        const double th = theta_rad(m.theta), r = val(m.rho) - std::cos(th) * ox[i] - std::sin(th) * oy[i];
+        const double th = theta_rad(m.theta),
+                     r = val(m.rho) - std::cos(th) * ox[i] - std::sin(th) * oy[i];
         cx = r * std::cos(th);
         cy = r * std::sin(th);
     }
@@ -113,7 +119,10 @@ struct RefClosestPoints {
         last_theta = theta_rad(m.theta);
     }
     void predict() {
-        for (int i = 0; i < n; ++i) { ax[i].predict(1); ay[i].predict(1); }
+        for (int i = 0; i < n; ++i) {
+            ax[i].predict(1);
+            ay[i].predict(1);
+        }
     }
     void update(const Segment& m) {
         for (int i = 0; i < n; ++i) {
@@ -128,13 +137,18 @@ struct RefClosestPoints {
     void line(double& th, double& rho) const {
         if (n >= 2) {
             double mx = 0, my = 0;
-            for (int i = 0; i < n; ++i) { mx += ox[i] + ax[i].x; my += oy[i] + ay[i].x; }
+            for (int i = 0; i < n; ++i) {
+                mx += ox[i] + ax[i].x;
+                my += oy[i] + ay[i].x;
+            }
             mx /= n;
             my /= n;
             double sxx = 0, syy = 0, sxy = 0, spread = 0;  // spread: largest distance², px²
             for (int i = 0; i < n; ++i) {
                 const double dx = ox[i] + ax[i].x - mx, dy = oy[i] + ay[i].x - my;
-                sxx += dx * dx; syy += dy * dy; sxy += dx * dy;
+                sxx += dx * dx;
+                syy += dy * dy;
+                sxy += dx * dy;
                 for (int j = i + 1; j < n; ++j)
                     spread = std::max(spread, std::pow(ox[i] + ax[i].x - ox[j] - ax[j].x, 2) +
                                                   std::pow(oy[i] + ay[i].x - oy[j] - ay[j].x, 2));
@@ -156,15 +170,17 @@ struct RefClosestPoints {
 
 // ---- reference: the turn model in double ----------------------------------------------------
 struct RefTurn {
-    double axx, ayy;          // anchor
-    RefAxis angle;            // degrees
-    double x[3], p[3][3];     // ρ, ρ', ρ''
+    double axx, ayy;       // anchor
+    RefAxis angle;         // degrees
+    double x[3], p[3][3];  // ρ, ρ', ρ''
     double r_off, q_off, r_ang, q_ang;
     void set(const LineTrackerParams& lp) {
         axx = val(lp.turn.anchor.x);
         ayy = val(lp.turn.anchor.y);
-        r_off = val(lp.turn.r_offset); q_off = val(lp.turn.q_offset);
-        r_ang = val(lp.turn.r_angle); q_ang = val(lp.turn.q_angle);
+        r_off = val(lp.turn.r_offset);
+        q_off = val(lp.turn.q_offset);
+        r_ang = val(lp.turn.r_angle);
+        q_ang = val(lp.turn.q_angle);
     }
     void init(const Segment& m, const LineTrackerParams& lp) {
         double th = theta_rad(m.theta) * 180 / kPi;
@@ -173,23 +189,34 @@ struct RefTurn {
         const double t = theta_rad(m.theta);
         x[0] = val(m.rho) - std::cos(t) * axx - std::sin(t) * ayy;
         x[1] = x[2] = 0;
-        for (auto& row : p) for (double& e : row) e = 0;
-        p[0][0] = r_off; p[1][1] = val(lp.turn.p0_rate); p[2][2] = val(lp.turn.p0_accel);
+        for (auto& row : p)
+            for (double& e : row) e = 0;
+        p[0][0] = r_off;
+        p[1][1] = val(lp.turn.p0_rate);
+        p[2][2] = val(lp.turn.p0_accel);
     }
     void predict() {
         const double w = std::clamp(angle.v, -45.0, 45.0) * kPi / 180;
         const double sinc = w == 0 ? 1 : std::sin(w) / w;
         const double oc = w == 0 ? 0.5 : (1 - std::cos(w)) / (w * w);
-        const double A[3][3] = {{1, sinc, oc}, {0, std::cos(w), sinc}, {0, -w * std::sin(w), std::cos(w)}};
+        const double A[3][3] = {
+            {1, sinc, oc}, {0, std::cos(w), sinc}, {0, -w * std::sin(w), std::cos(w)}};
         const double g[3] = {1.0 / 6, 0.5, 1};
         double nx[3] = {0, 0, 0}, m[3][3] = {}, np[3][3] = {};
-        for (int i = 0; i < 3; ++i) for (int k = 0; k < 3; ++k) nx[i] += A[i][k] * x[k];
-        for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) for (int k = 0; k < 3; ++k) m[i][j] += A[i][k] * p[k][j];
-        for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) {
-            np[i][j] = q_off * g[i] * g[j];
-            for (int k = 0; k < 3; ++k) np[i][j] += m[i][k] * A[j][k];
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k) nx[i] += A[i][k] * x[k];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                for (int k = 0; k < 3; ++k) m[i][j] += A[i][k] * p[k][j];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                np[i][j] = q_off * g[i] * g[j];
+                for (int k = 0; k < 3; ++k) np[i][j] += m[i][k] * A[j][k];
+            }
+        for (int i = 0; i < 3; ++i) {
+            x[i] = nx[i];
+            for (int j = 0; j < 3; ++j) p[i][j] = np[i][j];
         }
-        for (int i = 0; i < 3; ++i) { x[i] = nx[i]; for (int j = 0; j < 3; ++j) p[i][j] = np[i][j]; }
         angle.predict(q_ang);
         if (angle.x >= 180) angle.x -= 360;
         if (angle.x < -180) angle.x += 360;
@@ -197,15 +224,25 @@ struct RefTurn {
     void update(const Segment& m) {
         double th = theta_rad(m.theta) * 180 / kPi;
         double d = std::remainder(th - angle.x, 360.0), sign = 1;
-        if (d >= 90) { d -= 180; sign = -1; } else if (d < -90) { d += 180; sign = -1; }
+        if (d >= 90) {
+            d -= 180;
+            sign = -1;
+        } else if (d < -90) {
+            d += 180;
+            sign = -1;
+        }
         const double t = theta_rad(m.theta);
         const double z = sign * (val(m.rho) - std::cos(t) * axx - std::sin(t) * ayy);
         angle.update(angle.x + d, r_ang);
         const double s = p[0][0] + r_off, nu = z - x[0];
         double k[3], row0[3];
-        for (int i = 0; i < 3; ++i) { k[i] = p[i][0] / s; row0[i] = p[0][i]; }
+        for (int i = 0; i < 3; ++i) {
+            k[i] = p[i][0] / s;
+            row0[i] = p[0][i];
+        }
         for (int i = 0; i < 3; ++i) x[i] += k[i] * nu;
-        for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) p[i][j] -= k[i] * row0[j];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) p[i][j] -= k[i] * row0[j];
     }
     void line(double& th, double& rho) const {
         th = angle.x * kPi / 180;
@@ -257,7 +294,8 @@ TEST_CASE("turn transition: the series agree with sin and cos", "[line_tracker]"
         const q16_16 deg = q16(tenth / 10.0);
         const double w = val(deg) * kPi / 180;
         const TurnTransition t = turn_transition(deg);
-        const double sinc = w == 0 ? 1 : std::sin(w) / w, oc = w == 0 ? 0.5 : (1 - std::cos(w)) / (w * w);
+        const double sinc = w == 0 ? 1 : std::sin(w) / w,
+                     oc = w == 0 ? 0.5 : (1 - std::cos(w)) / (w * w);
         CHECK(std::fabs(t.sinc.raw / 1073741824.0 - sinc) < 1e-8);
         CHECK(std::fabs(t.one_cos.raw / 1073741824.0 - oc) < 1e-8);
         CHECK(std::fabs(t.cos.raw / 1073741824.0 - std::cos(w)) < 1e-8);
@@ -265,7 +303,8 @@ TEST_CASE("turn transition: the series agree with sin and cos", "[line_tracker]"
     }
 }
 
-TEST_CASE("line tracker: closest-point model follows the double reference for 10000 frames", "[line_tracker]") {
+TEST_CASE("line tracker: closest-point model follows the double reference for 10000 frames",
+          "[line_tracker]") {
     for (int filters = 1; filters <= 3; ++filters) {
         LineTrackerParams p = default_line_tracker_params(320, 240);
         p.filters = static_cast<uint8_t>(filters);
@@ -276,7 +315,8 @@ TEST_CASE("line tracker: closest-point model follows the double reference for 10
     }
 }
 
-TEST_CASE("line tracker: turn model follows the double reference for 10000 frames", "[line_tracker]") {
+TEST_CASE("line tracker: turn model follows the double reference for 10000 frames",
+          "[line_tracker]") {
     LineTrackerParams p = default_line_tracker_params(320, 240);
     p.model = LineModel::turn;
     RefTurn ref;
@@ -285,12 +325,20 @@ TEST_CASE("line tracker: turn model follows the double reference for 10000 frame
     CHECK(worst < 0.05);
 }
 
-TEST_CASE("line tracker: exact motions are predicted exactly once the filters have settled", "[line_tracker]") {
+TEST_CASE("line tracker: exact motions are predicted exactly once the filters have settled",
+          "[line_tracker]") {
     // Pure translation, 2 px/frame along the normal: every model's constant-velocity part is
     // exact. A turn of 6°/frame about (40, 30): only the turn model's transition is.
-    struct Case { LineModel model; int filters; bool turning; double tol; };
-    const Case cases[] = {{LineModel::closest_points, 1, false, 0.05}, {LineModel::closest_points, 3, false, 0.05},
-                          {LineModel::turn, 3, false, 0.05}, {LineModel::turn, 3, true, 0.05}};
+    struct Case {
+        LineModel model;
+        int filters;
+        bool turning;
+        double tol;
+    };
+    const Case cases[] = {{LineModel::closest_points, 1, false, 0.05},
+                          {LineModel::closest_points, 3, false, 0.05},
+                          {LineModel::turn, 3, false, 0.05},
+                          {LineModel::turn, 3, true, 0.05}};
     for (const Case& c : cases) {
         LineTrackerParams p = default_line_tracker_params(320, 240);
         p.model = c.model;
@@ -315,13 +363,14 @@ TEST_CASE("line tracker: exact motions are predicted exactly once the filters ha
             if (k >= 40) late = std::max(late, gap_to(tracker.line(), th, rho, 160, 120));
             tracker.update(measure(th, rho, 160, 120));
         }
-        INFO("model " << static_cast<int>(c.model) << " filters " << c.filters << " turning " << c.turning
-                      << ": prediction gap " << late << " px");
+        INFO("model " << static_cast<int>(c.model) << " filters " << c.filters << " turning "
+                      << c.turning << ": prediction gap " << late << " px");
         CHECK(late < c.tol);
     }
 }
 
-TEST_CASE("line tracker: lines through a filter's origin (the paper's near-origin case)", "[line_tracker]") {
+TEST_CASE("line tracker: lines through a filter's origin (the paper's near-origin case)",
+          "[line_tracker]") {
     // A line through the image origin, translating along x by 1 px/frame: filter 0's closest
     // point passes through r = 0. One filter alone keeps the last measured direction there;
     // three filters fit the line through the other two points and need no fallback.

@@ -1,5 +1,5 @@
-// The quadrangle tracker (core/tracking/quad_tracker.h) on hand-made line lists: a bright board whose
-// ground-truth corners are known moves and turns; sides are withheld, replaced by distractors
+// The quadrangle tracker (core/tracking/quad_tracker.h) on hand-made line lists: a bright board
+// whose ground-truth corners are known moves and turns; sides are withheld, replaced by distractors
 // or by lines of the wrong polarity, and the track's corners are checked against the truth.
 #include <catch2/catch.hpp>
 
@@ -19,7 +19,9 @@ constexpr int kW = 320, kH = 240;
 q16_16 q16(double v) { return q16_16::from_raw(std::llround(v * 65536.0)); }
 double val(q16_16 v) { return v.raw / 65536.0; }
 
-struct P { double x, y; };
+struct P {
+    double x, y;
+};
 
 // The segment from a to b as the lines stage reports it, with the polarity of a board brighter
 // than its surroundings whose centre is `inside`.
@@ -27,14 +29,23 @@ Segment segment(P a, P b, P inside, int8_t polarity = 1) {
     const double len = std::hypot(b.x - a.x, b.y - a.y);
     double nx = -(b.y - a.y) / len, ny = (b.x - a.x) / len;
     double rho = nx * a.x + ny * a.y;
-    if (rho < 0) { nx = -nx; ny = -ny; rho = -rho; }
+    if (rho < 0) {
+        nx = -nx;
+        ny = -ny;
+        rho = -rho;
+    }
     double th = std::atan2(ny, nx);
     if (th < 0) th += 2 * kPi;
     Segment s{};
-    s.x1 = q16(a.x); s.y1 = q16(a.y); s.x2 = q16(b.x); s.y2 = q16(b.y);
+    s.x1 = q16(a.x);
+    s.y1 = q16(a.y);
+    s.x2 = q16(b.x);
+    s.y2 = q16(b.y);
     s.rho = q16(rho);
-    s.theta = static_cast<angle_t>(static_cast<uint64_t>(std::llround(th / (2 * kPi) * 4294967296.0)) & 0xFFFFFFFFu);
-    s.cx = q16(rho * nx); s.cy = q16(rho * ny);
+    s.theta = static_cast<angle_t>(
+        static_cast<uint64_t>(std::llround(th / (2 * kPi) * 4294967296.0)) & 0xFFFFFFFFu);
+    s.cx = q16(rho * nx);
+    s.cy = q16(rho * ny);
     s.points = 50;
     const bool inside_positive = nx * inside.x + ny * inside.y - rho > 0;
     s.bright_side = static_cast<int8_t>(inside_positive ? polarity : -polarity);
@@ -73,8 +84,8 @@ struct Harness {
         Quad quads[4];
         uint16_t count = 0;
         QuadStats stats;
-        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), kW, kH, QuadParams{}, pairs, 64, normals.data(), quads, 4,
-                     &count, &stats);
+        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), kW, kH, QuadParams{}, pairs,
+                     64, normals.data(), quads, 4, &count, &stats);
         return tracker.step(lines.data(), static_cast<uint16_t>(lines.size()), quads, count);
     }
     // Frames 0 .. frames − 1 of the board with every side; c is left at the last frame's corners.
@@ -89,7 +100,8 @@ struct Harness {
 double corner_error(const TrackedQuad& t, const P truth[4]) {
     double worst = 0;
     for (int i = 0; i < 4; ++i)
-        worst = std::max(worst, std::hypot(val(t.corners[i].x) - truth[i].x, val(t.corners[i].y) - truth[i].y));
+        worst = std::max(
+            worst, std::hypot(val(t.corners[i].x) - truth[i].x, val(t.corners[i].y) - truth[i].y));
     return worst;
 }
 
@@ -116,7 +128,8 @@ TEST_CASE("quad tracker: follows a moving board, every side detected", "[quad_tr
     }
 }
 
-TEST_CASE("quad tracker: top and bottom sides missing for three frames are predicted", "[quad_tracker]") {
+TEST_CASE("quad tracker: top and bottom sides missing for three frames are predicted",
+          "[quad_tracker]") {
     // The paper's frames 41–43: the lines of the top and bottom are not extracted, the
     // quadrangle is still formed from the trackers' predictions.
     Harness h;
@@ -152,7 +165,8 @@ TEST_CASE("quad tracker: distractors and wrong polarity are not taken", "[quad_t
     CHECK(corner_error(t, c) < 0.5);
 }
 
-TEST_CASE("quad tracker: a side unseen too long loses the track; the next detection restarts it", "[quad_tracker]") {
+TEST_CASE("quad tracker: a side unseen too long loses the track; the next detection restarts it",
+          "[quad_tracker]") {
     Harness h;
     const QuadTrackerParams params = default_quad_tracker_params(kW, kH);
     P c[4];
@@ -178,7 +192,8 @@ TEST_CASE("quad tracker: a side unseen too long loses the track; the next detect
     CHECK(corner_error(t, c) < 0.01);
 }
 
-TEST_CASE("quad tracker: a board that jumps past the gate is re-detected at once", "[quad_tracker]") {
+TEST_CASE("quad tracker: a board that jumps past the gate is re-detected at once",
+          "[quad_tracker]") {
     // Moved 30 px right and 30 px down at once, every side lies beyond the 12 px gate (all
     // predicted) while the detector sees the whole board: the detection wins in that very frame
     // instead of max_predicted frames of extrapolation.

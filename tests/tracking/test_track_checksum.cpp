@@ -142,7 +142,8 @@ TEST_CASE("track sequence: the models follow the line", "[track]") {
     }
 }
 
-TEST_CASE("track checksums: deterministic, distinct per model, same in the image's order", "[track]") {
+TEST_CASE("track checksums: deterministic, distinct per model, same in the image's order",
+          "[track]") {
     uint32_t sums[kTrackCaseCount];
     for (int i = 0; i < kTrackCaseCount; ++i) {
         const TrackCase& c = kTrackCases[i];

@@ -46,7 +46,8 @@ struct FrameHomographyScratch {
 // False when the texture does not fix both directions (det below 1/64 of its scale) or the
 // step exceeds one pixel (the corners disagree by more than the match allows).
 template <int R>
-bool match_displacement_q8(const Feature<R>& a, const Feature<R>& b, int32_t& dx_q8, int32_t& dy_q8) {
+bool match_displacement_q8(const Feature<R>& a, const Feature<R>& b, int32_t& dx_q8,
+                           int32_t& dy_q8) {
     static_assert(R >= 1 && R <= 7, "inner block of at most 13×13");
     constexpr int kSide = Feature<R>::kSide;
     int64_t sxx = 0, sxy = 0, syy = 0, sxt = 0, syt = 0;
@@ -80,7 +81,8 @@ FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
                                    const FrameHomographyConfig& config,
                                    FrameHomographyScratch<R, MaxFeatures>& scratch) {
     FrameHomography out;
-    const uint16_t found = match_features(a, b, config.match, scratch.matches, MaxFeatures, &out.match_stats);
+    const uint16_t found =
+        match_features(a, b, config.match, scratch.matches, MaxFeatures, &out.match_stats);
     for (uint16_t i = 0; i < found; ++i) {
         const Feature<R>& fa = a.items[scratch.matches[i].prev];
         const Feature<R>& fb = b.items[scratch.matches[i].cur];
@@ -90,8 +92,8 @@ FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
         constexpr float kQ8 = 1.0f / 256.0f;
         const float ax = static_cast<float>(fa.px), ay = static_cast<float>(fa.py);
         scratch.matches[out.matches] = scratch.matches[i];
-        scratch.pairs[out.matches++] =
-            PointPair{ax, ay, ax + static_cast<float>(dx_q8) * kQ8, ay + static_cast<float>(dy_q8) * kQ8};
+        scratch.pairs[out.matches++] = PointPair{ax, ay, ax + static_cast<float>(dx_q8) * kQ8,
+                                                 ay + static_cast<float>(dy_q8) * kQ8};
     }
     out.ransac = estimate_homography(scratch.pairs, out.matches, config.ransac, scratch.inlier);
     return out;

@@ -96,7 +96,8 @@ float ln_unit(float x) {
     const float s = (m - 1.0f) / (m + 1.0f);
     const float s2 = s * s;
     const float series =
-        s * (2.0f + s2 * (2.0f / 3.0f + s2 * (2.0f / 5.0f + s2 * (2.0f / 7.0f + s2 * (2.0f / 9.0f)))));
+        s *
+        (2.0f + s2 * (2.0f / 3.0f + s2 * (2.0f / 5.0f + s2 * (2.0f / 7.0f + s2 * (2.0f / 9.0f)))));
     return static_cast<float>(e) * kLn2 + series;
 }
 
@@ -307,9 +308,9 @@ uint32_t count_inliers(const Homography& h, const PointPair* pairs, uint16_t n, 
 uint16_t adaptive_limit(uint32_t inliers, uint32_t n, float ln_1mc, uint16_t max_it) {
     if (inliers == 0 || n == 0 || ln_1mc > 0) return max_it;
     const float w = static_cast<float>(inliers) / static_cast<float>(n);
-    const float p = w * w * w * w;  // probability that a sample of 4 is all inliers
-    if (!(p < 1.0f)) return 0;      // every pair an inlier: no better sample exists
-    const float q = 1.0f - p;       // in [2⁻²⁴, 1]: p < 1 is a float below 1
+    const float p = w * w * w * w;   // probability that a sample of 4 is all inliers
+    if (!(p < 1.0f)) return 0;       // every pair an inlier: no better sample exists
+    const float q = 1.0f - p;        // in [2⁻²⁴, 1]: p < 1 is a float below 1
     if (!(q < 1.0f)) return max_it;  // p below float resolution: no bound
     const float denom = ln_unit(q);  // < 0
     if (!(denom < 0)) return max_it;
@@ -360,7 +361,8 @@ bool multiply_homographies(const Homography& a, const Homography& b, Homography&
     float m[9];
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
-            m[3 * r + c] = a.m[3 * r] * b.m[c] + a.m[3 * r + 1] * b.m[3 + c] + a.m[3 * r + 2] * b.m[6 + c];
+            m[3 * r + c] =
+                a.m[3 * r] * b.m[c] + a.m[3 * r + 1] * b.m[3 + c] + a.m[3 * r + 2] * b.m[6 + c];
     if (!scale_to_h9(m)) return false;
     for (int i = 0; i < 9; ++i) out.m[i] = m[i];
     return true;
@@ -474,7 +476,8 @@ float reprojection_error_sq(const Homography& h, const PointPair& p) {
     const float j12 = pa * qa + ra * sa;
     // det(JJᵀ) by Cauchy-Binet, a sum of squares (>= w⁴), so never negative by rounding.
     const float minor = pa * sa - ra * qa;
-    const float det = minor * minor + w * w * (pa * pa + qa * qa + ra * ra + sa * sa) + w * w * w * w;
+    const float det =
+        minor * minor + w * w * (pa * pa + qa * qa + ra * ra + sa * sa) + w * w * w * w;
     if (!(det > 0) || !finite(det)) return FLT_MAX;  // overflow
     const float num = j22 * e1 * e1 - 2.0f * j12 * e1 * e2 + j11 * e2 * e2;
     const float r = num / det;
@@ -510,7 +513,7 @@ RansacResult estimate_homography(const PointPair* pairs, uint16_t n, const Ransa
     if (inlier_mask)
         for (uint16_t i = 0; i < n; ++i) inlier_mask[i] = 0;
     const uint32_t min_inl = config.min_inliers > 4 ? config.min_inliers : 4u;
-    if (!pairs || n < 4 || n < min_inl) return res;  // too_few_pairs
+    if (!pairs || n < 4 || n < min_inl) return res;          // too_few_pairs
     const float thr2 = config.inlier_px * config.inlier_px;  // NaN or 0: nothing is an inlier
     const float ln_1mc = ln_one_minus(config.confidence);
 

@@ -57,11 +57,11 @@ float reprojection_error_sq(const Homography& h, const PointPair& p);
 float transfer_error_sq(const Homography& h, const PointPair& p);
 
 struct RansacConfig {
-    float inlier_px = 2.0f;        // an inlier's one-way transfer error |H a - b| <= this, px
-    float confidence = 0.995f;     // stop when a better sample is this unlikely, 0 < c < 1
+    float inlier_px = 2.0f;          // an inlier's one-way transfer error |H a - b| <= this, px
+    float confidence = 0.995f;       // stop when a better sample is this unlikely, 0 < c < 1
     uint16_t max_iterations = 1000;  // hypotheses tried at most (degenerate samples count)
-    uint16_t min_inliers = 8;      // fewer: no_consensus (4 would fit any sample exactly)
-    uint64_t seed = 1;             // Pcg32 seed: the same pairs and seed give the same H everywhere
+    uint16_t min_inliers = 8;        // fewer: no_consensus (4 would fit any sample exactly)
+    uint64_t seed = 1;  // Pcg32 seed: the same pairs and seed give the same H everywhere
 };
 
 enum class HomographyStatus : uint8_t {
@@ -75,10 +75,10 @@ const char* homography_status_name(HomographyStatus s);
 
 struct RansacResult {
     HomographyStatus status = HomographyStatus::too_few_pairs;
-    Homography h;             // refitted on the inliers (identity unless status == ok)
-    uint16_t inliers = 0;     // pairs within inlier_px of the refitted H (no_consensus: of the
-                              // best 4-point hypothesis, for diagnosis)
-    uint16_t iterations = 0;  // hypotheses drawn
+    Homography h;               // refitted on the inliers (identity unless status == ok)
+    uint16_t inliers = 0;       // pairs within inlier_px of the refitted H (no_consensus: of the
+                                // best 4-point hypothesis, for diagnosis)
+    uint16_t iterations = 0;    // hypotheses drawn
     float reprojection_px = 0;  // sqrt of the mean of equation (7) over the inliers, px
 };
 

@@ -47,7 +47,8 @@ Innovation TargetKalman::innovation(float zx, float zy) const {
     in.det_s = in.s[0] * in.s[2] - in.s[1] * in.s[1];
     // S is positive definite (P >= 0, r > 0): det S >= r² > 0, no division by zero.
     in.nds = (in.s[2] * in.nu_x * in.nu_x - 2.0f * in.s[1] * in.nu_x * in.nu_y +
-              in.s[0] * in.nu_y * in.nu_y) / in.det_s;
+              in.s[0] * in.nu_y * in.nu_y) /
+             in.det_s;
     return in;
 }
 

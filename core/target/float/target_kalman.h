@@ -15,17 +15,17 @@
 namespace qt {
 
 struct TargetKalmanParams {
-    float q_pos = 20.0f;   // Q's position variance per frame, px² (the paper's 20)
-    float q_vel = 1.0f;    // Q's velocity variance per frame, px²/frame² (the paper's 1)
-    float r = 4.0f;        // measurement variance of template matching, px² (σ = 2 px)
-    float p0_vel = 4.0f;   // initial velocity variance, px²/frame² (initial position: r)
+    float q_pos = 20.0f;  // Q's position variance per frame, px² (the paper's 20)
+    float q_vel = 1.0f;   // Q's velocity variance per frame, px²/frame² (the paper's 1)
+    float r = 4.0f;       // measurement variance of template matching, px² (σ = 2 px)
+    float p0_vel = 4.0f;  // initial velocity variance, px²/frame² (initial position: r)
 };
 
 struct Innovation {
-    float nu_x = 0, nu_y = 0;   // z − H x̄, px
-    float s[3] = {0, 0, 0};     // S = [[s0, s1], [s1, s2]], px²
-    float det_s = 0;            // det S, px⁴
-    float nds = 0;              // equation (6), dimensionless (χ² with 2 degrees of freedom)
+    float nu_x = 0, nu_y = 0;  // z − H x̄, px
+    float s[3] = {0, 0, 0};    // S = [[s0, s1], [s1, s2]], px²
+    float det_s = 0;           // det S, px⁴
+    float nds = 0;             // equation (6), dimensionless (χ² with 2 degrees of freedom)
 };
 
 // The Jacobian ∂(x', y')/∂(x, y) of h at (x, y), row-major j[0..3]; false when (x, y) maps to

@@ -12,11 +12,11 @@
 #pragma once
 #include <stdint.h>
 
-#include "target/float/frame_homography.h"
-#include "gradient/gradient_stage.h"
-#include "target/harris.h"
 #include "base/status.h"
+#include "gradient/gradient_stage.h"
+#include "target/float/frame_homography.h"
 #include "target/float/target_tracker.h"
+#include "target/harris.h"
 #include "target/template_search.h"
 
 namespace qt {
@@ -25,7 +25,7 @@ struct TargetPipelineConfig {
     HarrisConfig harris;
     FrameHomographyConfig geometry;
     TargetTrackerParams tracker;
-    uint16_t capture_margin_px = 8;   // region kept beyond the expected search window, px
+    uint16_t capture_margin_px = 8;  // region kept beyond the expected search window, px
     // The template is cut again at the match when a measurement is accepted with an NCC
     // below this (Q15; 0.85 = 27853): it follows the target's slow change of look (scale,
     // rotation, the ground moving behind it) without being re-cut every frame, which would
@@ -36,17 +36,17 @@ struct TargetPipelineConfig {
 
 // What one frame gave.
 struct TargetFrame {
-    bool started = false;        // this frame started the track (set_target)
-    bool tracking = false;       // a track exists (started now or before)
-    TargetEstimate estimate;     // the tracker's output (meaningful when tracking)
-    uint16_t features = 0;       // Harris corners of this frame
-    FrameHomography geometry;    // previous → this frame (status too_few_pairs on the first frame)
-    SearchWindow window;         // where the template was searched
-    TemplateHit hit;             // the best match there
+    bool started = false;      // this frame started the track (set_target)
+    bool tracking = false;     // a track exists (started now or before)
+    TargetEstimate estimate;   // the tracker's output (meaningful when tracking)
+    uint16_t features = 0;     // Harris corners of this frame
+    FrameHomography geometry;  // previous → this frame (status too_few_pairs on the first frame)
+    SearchWindow window;       // where the template was searched
+    TemplateHit hit;           // the best match there
 };
 
-template <uint16_t MaxWidth, uint16_t MaxFeatures = 96, int PatchRadius = 4, uint8_t MaxTemplate = 16,
-          uint16_t MaxRegion = 84>
+template <uint16_t MaxWidth, uint16_t MaxFeatures = 96, int PatchRadius = 4,
+          uint8_t MaxTemplate = 16, uint16_t MaxRegion = 84>
 class TargetPipeline {
 public:
     using Features = FeatureSet<PatchRadius, MaxFeatures>;
@@ -86,12 +86,13 @@ public:
             capture_.begin(roi_x_, roi_y_, roi_w_, roi_h_, width, height);
         } else if (tracking_) {
             const SearchWindow e = tracker_.expected();
-            const int32_t half = static_cast<int32_t>(config_.tracker.max_radius_px > config_.tracker.template_radius_px
+            const int32_t half = static_cast<int32_t>(config_.tracker.max_radius_px >
+                                                              config_.tracker.template_radius_px
                                                           ? config_.tracker.max_radius_px
                                                           : config_.tracker.template_radius_px) +
                                  config_.capture_margin_px + MaxTemplate / 2 + 1;
-            capture_.begin(static_cast<int32_t>(e.x) - half, static_cast<int32_t>(e.y) - half, 2 * half + 1,
-                           2 * half + 1, width, height);
+            capture_.begin(static_cast<int32_t>(e.x) - half, static_cast<int32_t>(e.y) - half,
+                           2 * half + 1, 2 * half + 1, width, height);
         } else {
             capture_.begin(0, 0, 0, 0, width, height);
         }
@@ -108,10 +109,11 @@ public:
             return s;
         }
         Status hs = Status::ok;
-        s = gradient_.push_row(pixels, length, [&](uint16_t y, const gradient_word* words, uint16_t w) {
-            const Status r = harris_.push_gradient_row(y, words, w);
-            if (r != Status::ok) hs = r;
-        });
+        s = gradient_.push_row(pixels, length,
+                               [&](uint16_t y, const gradient_word* words, uint16_t w) {
+                                   const Status r = harris_.push_gradient_row(y, words, w);
+                                   if (r != Status::ok) hs = r;
+                               });
         capture_.push_row(y_, pixels);
         ++y_;
         return s != Status::ok ? s : hs;
@@ -132,7 +134,8 @@ public:
             FrameHomographyConfig gc = config_.geometry;
             // Corners move with the camera: look for each where the last homography sends it.
             float ex, ey;
-            const float cx = 0.5f * static_cast<float>(width_), cy = 0.5f * static_cast<float>(height_);
+            const float cx = 0.5f * static_cast<float>(width_),
+                        cy = 0.5f * static_cast<float>(height_);
             if (tracking_ && apply_homography(last_h_, cx, cy, ex, ey)) {
                 gc.match.offset_x = clamp16(ex - cx);
                 gc.match.offset_y = clamp16(ey - cy);
@@ -152,8 +155,8 @@ public:
                 return Status::bad_size;  // the box is not wholly inside the frame
             }
             tracker_.init(static_cast<float>(roi_x_) + 0.5f * static_cast<float>(roi_w_ - 1),
-                          static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1), width_,
-                          height_, config_.tracker);
+                          static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1),
+                          width_, height_, config_.tracker);
             last_h_ = Homography{};
             // The box's centre is the template's: no offset.
             offset_x_q8_ = 0;
@@ -207,7 +210,8 @@ private:
         // Top-left so that the template centre tl + (w − 1)/2 is nearest the target centre.
         const int32_t left = floor_div256(x_q8 - (w - 1) * 128 + 128);
         const int32_t top = floor_div256(y_q8 - (h - 1) * 128 + 128);
-        if (!cut_template(capture_.region(), left, top, template_.w, template_.h, template_)) return;
+        if (!cut_template(capture_.region(), left, top, template_.w, template_.h, template_))
+            return;
         offset_x_q8_ = x_q8 - (left * 256 + (w - 1) * 128);
         offset_y_q8_ = y_q8 - (top * 256 + (h - 1) * 128);
     }

@@ -77,8 +77,7 @@ SearchWindow TargetTracker::predict(const FrameGeometry& g) {
             w.y = last_y_;
             w.radius = params_.template_radius_px;
             return w;
-        case TargetMethod::filter_only:
-            break;
+        case TargetMethod::filter_only: break;
         case TargetMethod::fused:
         case TargetMethod::homography_only: {
             geometry_ok_ = g.valid && g.reprojection_px <= params_.gate_rep_px;
@@ -102,11 +101,14 @@ SearchWindow TargetTracker::predict(const FrameGeometry& g) {
     const Innovation gate = kf_.gate();
     float j[4] = {1, 0, 0, 1};
     homography_jacobian(acc_, kf_.x(), kf_.y(), j);
-    const float s00 = j[0] * j[0] * gate.s[0] + 2 * j[0] * j[1] * gate.s[1] + j[1] * j[1] * gate.s[2];
-    const float s11 = j[2] * j[2] * gate.s[0] + 2 * j[2] * j[3] * gate.s[1] + j[3] * j[3] * gate.s[2];
+    const float s00 =
+        j[0] * j[0] * gate.s[0] + 2 * j[0] * j[1] * gate.s[1] + j[1] * j[1] * gate.s[2];
+    const float s11 =
+        j[2] * j[2] * gate.s[0] + 2 * j[2] * j[3] * gate.s[1] + j[3] * j[3] * gate.s[2];
     const float r = params_.gate_sigmas * sqrtf(s00 > s11 ? s00 : s11);
-    w.radius = r < params_.min_radius_px ? params_.min_radius_px
-             : r > params_.max_radius_px ? params_.max_radius_px : r;
+    w.radius = r < params_.min_radius_px   ? params_.min_radius_px
+               : r > params_.max_radius_px ? params_.max_radius_px
+                                           : r;
     return w;
 }
 

@@ -49,48 +49,50 @@ const char* target_method_name(TargetMethod m);
 
 struct TargetTrackerParams {
     TargetMethod method = TargetMethod::fused;
-    bool reset = true;             // Table III's reset (false: A accumulates from frame 0, Fig. 12)
+    bool reset = true;  // Table III's reset (false: A accumulates from frame 0, Fig. 12)
     TargetKalmanParams kalman;
-    float min_score = 0.7f;        // a template match counts as found when its NCC >= this
-    float gate_nds = 9.21f;        // D_nds gate: χ²(2 dof) at 99 %
-    float gate_rep_px = 1.5f;      // homography trustworthy when its reprojection error <= this, px
-    float reset_nds = 5.99f;       // reset when D_nds <= this (χ²(2) at 95 %) ...
-    float reset_det_s = 2500.0f;   // ... and det S <= this, px⁴ (σ ≈ 7 px per axis; with the
-                                   // paper's Q, S never falls below q_pos + r ≈ 24 px² per axis)
-    float gate_sigmas = 3.0f;      // search radius = gate_sigmas · √(largest variance of S), px,
-    float min_radius_px = 4.0f;    //   clamped to [min_radius_px, max_radius_px]
+    float min_score = 0.7f;       // a template match counts as found when its NCC >= this
+    float gate_nds = 9.21f;       // D_nds gate: χ²(2 dof) at 99 %
+    float gate_rep_px = 1.5f;     // homography trustworthy when its reprojection error <= this, px
+    float reset_nds = 5.99f;      // reset when D_nds <= this (χ²(2) at 95 %) ...
+    float reset_det_s = 2500.0f;  // ... and det S <= this, px⁴ (σ ≈ 7 px per axis; with the
+                                  // paper's Q, S never falls below q_pos + r ≈ 24 px² per axis)
+    float gate_sigmas = 3.0f;     // search radius = gate_sigmas · √(largest variance of S), px,
+    float min_radius_px = 4.0f;   //   clamped to [min_radius_px, max_radius_px]
     float max_radius_px = 24.0f;
     float template_radius_px = 16.0f;  // template_only: fixed search radius around the last match
     uint16_t max_unseen = 400;         // lost after this many frames without a measurement
-    uint16_t max_bad_geometry = 15;    // lost after this many untrustworthy homographies in a row, unseen
-    float max_scale = 4.0f;            // lost when A scales the area at the estimate beyond max_scale²
+    uint16_t max_bad_geometry =
+        15;                  // lost after this many untrustworthy homographies in a row, unseen
+    float max_scale = 4.0f;  // lost when A scales the area at the estimate beyond max_scale²
 };
 
 // The frame's camera motion: the homography from the previous frame's image into this one.
 struct FrameGeometry {
-    bool valid = false;      // false: the estimate failed this frame
-    Homography h;            // previous → current image
+    bool valid = false;         // false: the estimate failed this frame
+    Homography h;               // previous → current image
     float reprojection_px = 0;  // equation (7) as RMS over the inliers, px
 };
 
 // Where the caller should look for the target in the current frame.
 struct SearchWindow {
-    float x = 0, y = 0;   // centre, px (may lie outside the image)
-    float radius = 0;     // half side of the square of candidate centres, px; 0: do not search
+    float x = 0, y = 0;  // centre, px (may lie outside the image)
+    float radius = 0;    // half side of the square of candidate centres, px; 0: do not search
 };
 
 // The best template match in the window, from the caller's template search.
 struct TargetMeasurement {
     bool found = false;
-    float x = 0, y = 0;   // matched target centre, px
-    float score = 0;      // NCC, -1..1
+    float x = 0, y = 0;  // matched target centre, px
+    float score = 0;     // NCC, -1..1
 };
 
 struct TargetEstimate {
     TargetState state = TargetState::lost;
-    float x = 0, y = 0;   // target centre in the current image, px (outside the image when out of view)
-    float nds = 0;        // D_nds of the measurement considered (0 when none)
-    float det_s = 0;      // det S of the prediction, px⁴
+    float x = 0,
+          y = 0;      // target centre in the current image, px (outside the image when out of view)
+    float nds = 0;    // D_nds of the measurement considered (0 when none)
+    float det_s = 0;  // det S of the prediction, px⁴
     bool reset = false;   // the accumulation was reset this frame
     uint16_t unseen = 0;  // frames since the last accepted measurement
 };
@@ -121,8 +123,8 @@ private:
 
     TargetTrackerParams params_;
     TargetKalman kf_;
-    Homography acc_;        // reference image → current image
-    Homography last_h_;     // the last trustworthy frame homography
+    Homography acc_;     // reference image → current image
+    Homography last_h_;  // the last trustworthy frame homography
     uint16_t width_ = 0, height_ = 0;
     TargetState state_ = TargetState::lost;
     bool geometry_ok_ = false;
