@@ -38,17 +38,10 @@ static_assert(std::is_trivially_destructible<DetectorBox>::value,
 static_assert(std::is_trivially_destructible<TrackerBox>::value,
               "constructed over, never destroyed");
 
-// The header's capacities are the template arguments of the QVGA types.
-template <class>
-struct LineCaps;
-template <uint16_t W, uint16_t H, uint16_t E, uint32_t B, uint16_t T, uint16_t S, uint16_t L>
-struct LineCaps<qt::LineDetector<W, H, E, B, T, S, L>> {
-    static constexpr uint16_t width = W, height = H, lines = L;
-};
-using QvgaCaps =
-    LineCaps<std::decay_t<decltype(std::declval<const qt::BoardDetectorQvga&>().lines())>>;
-static_assert(QvgaCaps::width == QT_MAX_WIDTH && QvgaCaps::height == QT_MAX_HEIGHT, "frame size");
-static_assert(QvgaCaps::lines == QT_MAX_LINES, "line capacity");
+// The header's capacities are the QVGA configuration's.
+static_assert(qt::Qvga::max_width == QT_MAX_WIDTH && qt::Qvga::max_height == QT_MAX_HEIGHT,
+              "frame size");
+static_assert(qt::Qvga::lines == QT_MAX_LINES, "line capacity");
 static_assert(qt::BoardDetectorQvga::max_quads() == QT_MAX_QUADS, "quadrangle capacity");
 
 // Numbers shared with the C++ enums.
@@ -72,10 +65,11 @@ static_assert(static_cast<int>(qt::TrackState::none) == QT_TRACK_NONE &&
                   static_cast<int>(qt::TrackState::started) == QT_TRACK_STARTED &&
                   static_cast<int>(qt::TrackState::tracking) == QT_TRACK_TRACKING,
               "qt_track_state mirrors qt::TrackState");
-static_assert(static_cast<int>(qt::lost_side_unseen) == QT_LOST_SIDE_UNSEEN &&
-                  static_cast<int>(qt::lost_shape) == QT_LOST_SHAPE &&
-                  static_cast<int>(qt::lost_saturated) == QT_LOST_SATURATED &&
-                  static_cast<int>(qt::lost_detection_disagrees) == QT_LOST_DETECTION_DISAGREES,
+static_assert(static_cast<int>(qt::QuadTrackLost::side_unseen) == QT_LOST_SIDE_UNSEEN &&
+                  static_cast<int>(qt::QuadTrackLost::shape) == QT_LOST_SHAPE &&
+                  static_cast<int>(qt::QuadTrackLost::saturated) == QT_LOST_SATURATED &&
+                  static_cast<int>(qt::QuadTrackLost::detection_disagrees) ==
+                      QT_LOST_DETECTION_DISAGREES,
               "qt_track_lost mirrors qt::QuadTrackLost");
 static_assert(std::is_same<qt_gradient_word, qt::gradient_word>::value, "gradient word");
 
@@ -297,7 +291,7 @@ qt_status qt_track(qt_tracker* tracker, const qt_detector* detector, qt_tracked_
         t.tracker.step(lines.lines(), lines.line_count(), d.det.quads(), d.det.quad_count());
     out->state = static_cast<uint8_t>(r.state);
     out->detected = r.detected;
-    out->lost_reason = t.tracker.stats().lost_reason;
+    out->lost_reason = static_cast<uint8_t>(t.tracker.stats().lost_reason);
     out->track_id = r.track_id;
     out->age = r.age;
     for (int i = 0; i < 4; ++i) {
@@ -307,6 +301,8 @@ qt_status qt_track(qt_tracker* tracker, const qt_detector* detector, qt_tracked_
     return QT_OK;
 }
 
-const char* qt_track_lost_name(uint8_t reason) { return qt::quad_track_lost_name(reason); }
+const char* qt_track_lost_name(uint8_t reason) {
+    return qt::quad_track_lost_name(static_cast<qt::QuadTrackLost>(reason));
+}
 
 }  // extern "C"

@@ -87,7 +87,7 @@ size_t format_quad_text(const Quad& q, char* out) {
     return end_line(out, p);
 }
 
-size_t format_track_text(const TrackedQuad& t, uint8_t lost_reason, char* out) {
+size_t format_track_text(const TrackedQuad& t, QuadTrackLost lost_reason, char* out) {
     char* p = put_text(out, "track ", 6);
     p = put_text(p, track_state_name(t.state), 10);
     *p++ = ' ';

@@ -44,15 +44,15 @@ size_t format_quads_header(uint16_t quads, Status status, char* out);
 size_t format_quad_text(const Quad& q, char* out);
 
 // The tracker's output for a frame and the reason a track ended in it (QuadTrackStats::
-// lost_reason, 0 for none) into out (kResultTextMax bytes).
-size_t format_track_text(const TrackedQuad& t, uint8_t lost_reason, char* out);
+// lost_reason) into out (kResultTextMax bytes).
+size_t format_track_text(const TrackedQuad& t, QuadTrackLost lost_reason, char* out);
 
 // A frame's whole text, line by line into sink(const char* text, size_t length): the header,
 // the lines, the quadrangles and the track. `det` is a BoardDetector (board_detector.h) after
 // finish(), which returned `status`.
 template <class Detector, class Sink>
 void write_frame_text(const char* name, const Detector& det, Status status,
-                      const TrackedQuad& track, uint8_t lost_reason, Sink&& sink) {
+                      const TrackedQuad& track, QuadTrackLost lost_reason, Sink&& sink) {
     char text[kResultTextMax];
     const auto& lines = det.lines();
     sink(text, format_frame_header(name, lines.stats().edges, lines.segment_count(),

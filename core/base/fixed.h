@@ -11,6 +11,8 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/precondition.h"
+
 namespace qt {
 
 // core/ relies on arithmetic right shift of negative values (implementation-defined before
@@ -50,28 +52,39 @@ constexpr T saturate(int64_t v) {
 }
 
 // |v| for v > INT64_MIN.
-constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+constexpr int64_t abs64(int64_t v) {
+    QT_PRECONDITION(v != -9223372036854775807LL - 1);
+    return v < 0 ? -v : v;
+}
 
 // v clamped into [lo, hi], lo <= hi.
 constexpr int64_t clamp64(int64_t v, int64_t lo, int64_t hi) {
+    QT_PRECONDITION(lo <= hi);
     return v < lo ? lo : v > hi ? hi : v;
 }
 
 // 2^n as a 64-bit integer, 0 <= n <= 62.
-constexpr int64_t pow2(int n) { return static_cast<int64_t>(1) << n; }
+constexpr int64_t pow2(int n) {
+    QT_PRECONDITION(n >= 0 && n <= 62);
+    return static_cast<int64_t>(1) << n;
+}
 
 // v / 2^n rounded to nearest, ties towards +inf. 0 <= n <= 62, |v| <= 2^62.
 constexpr int64_t shr_round_half_up(int64_t v, int n) {
+    QT_PRECONDITION(n >= 0 && n <= 62 && v >= -pow2(62) && v <= pow2(62));
     return n == 0 ? v : (v + pow2(n - 1)) >> n;
 }
 
 // v / 2^n rounded to nearest, ties away from zero. 0 <= n <= 62, |v| <= 2^62.
 constexpr int64_t shr_round_half_away(int64_t v, int n) {
+    QT_PRECONDITION(n >= 0 && n <= 62 && v >= -pow2(62) && v <= pow2(62));
     return n == 0 ? v : v >= 0 ? (v + pow2(n - 1)) >> n : -((-v + pow2(n - 1)) >> n);
 }
 
 // num / den rounded to nearest, ties away from zero. den != 0, |num|, |den| <= 2^62.
 constexpr int64_t div_round_half_away(int64_t num, int64_t den) {
+    QT_PRECONDITION(den != 0 && num >= -pow2(62) && num <= pow2(62) && den >= -pow2(62) &&
+                    den <= pow2(62));
     const bool neg = (num < 0) != (den < 0);
     const int64_t n = num < 0 ? -num : num;
     const int64_t d = den < 0 ? -den : den;
@@ -117,15 +130,6 @@ struct Fixed {
 
 using q16_16 = Fixed<16, int32_t>;  // range ±32768, step 1/65536: positions, lengths (px)
 using q2_30 = Fixed<30, int32_t>;   // range ±2, step 2^-30: sines, cosines, unit vectors
-using q8_8 = Fixed<8, int16_t>;     // range ±128, step 1/256: small gains and ratios
-using q1_15 = Fixed<15, int16_t>;   // range [-1, 1), step 2^-15: coefficients below one
-
-// Change format. Widening the fraction is exact (or saturates); narrowing rounds half away.
-template <typename To, int F, typename R>
-constexpr To rescale(Fixed<F, R> v) {
-    return To::frac_bits >= F ? To::from_raw(static_cast<int64_t>(v.raw) * pow2(To::frac_bits - F))
-                              : To::from_raw(shr_round_half_away(v.raw, F - To::frac_bits));
-}
 
 template <int F, typename R>
 constexpr Fixed<F, R> add_sat(Fixed<F, R> a, Fixed<F, R> b) {
@@ -133,34 +137,8 @@ constexpr Fixed<F, R> add_sat(Fixed<F, R> a, Fixed<F, R> b) {
 }
 
 template <int F, typename R>
-constexpr Fixed<F, R> sub_sat(Fixed<F, R> a, Fixed<F, R> b) {
-    return Fixed<F, R>::from_raw(static_cast<int64_t>(a.raw) - b.raw);
-}
-
-template <int F, typename R>
 constexpr Fixed<F, R> neg_sat(Fixed<F, R> a) {
     return Fixed<F, R>::from_raw(-static_cast<int64_t>(a.raw));
-}
-
-// a * b in the format To, rounded half away from zero, saturated. The 64-bit product of two
-// 32-bit raws cannot overflow (|a.raw * b.raw| <= 2^62).
-template <typename To, int Fa, typename Ra, int Fb, typename Rb>
-constexpr To mul(Fixed<Fa, Ra> a, Fixed<Fb, Rb> b) {
-    static_assert(Fa + Fb >= To::frac_bits, "mul cannot add fraction bits");
-    return To::from_raw(
-        shr_round_half_away(static_cast<int64_t>(a.raw) * b.raw, Fa + Fb - To::frac_bits));
-}
-
-// a / b in the format To, rounded half away from zero, saturated; b == 0 saturates towards
-// the sign of a (0 / 0 gives 0). To::frac_bits + Fb - Fa must lie in [0, 30].
-template <typename To, int Fa, typename Ra, int Fb, typename Rb>
-constexpr To div(Fixed<Fa, Ra> a, Fixed<Fb, Rb> b) {
-    static_assert(To::frac_bits + Fb - Fa >= 0 && To::frac_bits + Fb - Fa <= 30, "div range");
-    return b.raw == 0 ? To::from_raw(a.raw > 0   ? int_limits<typename To::rep>::hi
-                                     : a.raw < 0 ? int_limits<typename To::rep>::lo
-                                                 : 0)
-                      : To::from_raw(div_round_half_away(
-                            static_cast<int64_t>(a.raw) * pow2(To::frac_bits + Fb - Fa), b.raw));
 }
 
 }  // namespace qt

@@ -1,8 +1,11 @@
 #include "base/wide_mul.h"
 
+#include "base/precondition.h"
+
 namespace qt {
 
 int64_t mul_shr_round(int64_t a, int64_t b, int n) {
+    QT_PRECONDITION(n >= 0 && n <= 126);
     // Magnitudes as unsigned (two's-complement negation in uint64_t is defined, and gives 2^63
     // for INT64_MIN); the sign is applied at the end, so rounding half up on the magnitude is
     // rounding half away from zero on the signed value.
@@ -56,6 +59,7 @@ int bit_length(int64_t v) {  // v > 0: the n with 2^(n-1) <= v < 2^n
 }  // namespace
 
 Reciprocal reciprocal(int64_t s) {
+    QT_PRECONDITION(s > 0);
     const int len = bit_length(s);  // len ∈ [1, 63]
     const uint64_t d = static_cast<uint64_t>(s);
     // Restoring division of 2^(len-1+62) by d: rem < d < 2^63 throughout, so 2·rem < 2^64.

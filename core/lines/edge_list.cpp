@@ -1,5 +1,7 @@
 #include "lines/edge_list.h"
 
+#include "base/precondition.h"
+
 namespace qt {
 
 Status EdgeList::begin_frame(uint16_t height) {
@@ -15,6 +17,7 @@ Status EdgeList::begin_frame(uint16_t height) {
 }
 
 void EdgeList::begin_row(uint16_t y) {
+    QT_PRECONDITION(y < height_ && (next_row_ == 0 || y >= next_row_));  // in order, each once
     while (next_row_ <= y && next_row_ < height_) row_start_[next_row_++] = count_;
     current_y_ = y;
 }

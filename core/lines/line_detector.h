@@ -11,6 +11,7 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/capacity.h"
 #include "gradient/gradient_stage.h"
 #include "lines/edge_stage.h"
 #include "lines/hough.h"
@@ -36,9 +37,16 @@ struct LineStats {
     ClusterStats cluster;
 };
 
-template <uint16_t MaxWidth, uint16_t MaxHeight, uint16_t EdgeCapacity, uint32_t HoughBins,
-          uint16_t MaxThetaBins, uint16_t MaxSegments, uint16_t MaxLines>
+// Capacity: a base/capacity.h configuration (max_width, max_height, edge_points, theta_bins,
+// rho_step, segments, lines).
+template <class Capacity>
 class LineDetector {
+    static constexpr uint16_t MaxWidth = Capacity::max_width, MaxHeight = Capacity::max_height;
+    static constexpr uint16_t EdgeCapacity = Capacity::edge_points;
+    static constexpr uint16_t MaxThetaBins = Capacity::theta_bins;
+    static constexpr uint32_t HoughBins =
+        hough_bins_for(MaxWidth, MaxHeight, Capacity::theta_bins, Capacity::rho_step);
+    static constexpr uint16_t MaxSegments = Capacity::segments, MaxLines = Capacity::lines;
     static_assert(MaxSegments <= 255, "clustering handles up to 255 segments");
 
 public:
@@ -180,8 +188,8 @@ private:
 };
 
 // QVGA: 320 × 240, 4096 edge points, 2° × 2 px accumulator, 64 segments, 32 lines.
-using LineDetectorQvga = LineDetector<320, 240, 4096, hough_bins_for(320, 240, 90, 2), 90, 64, 32>;
+using LineDetectorQvga = LineDetector<Qvga>;
 // VGA: 640 × 480, 8192 edge points, 2° × 2 px accumulator, 128 segments, 64 lines.
-using LineDetectorVga = LineDetector<640, 480, 8192, hough_bins_for(640, 480, 90, 2), 90, 128, 64>;
+using LineDetectorVga = LineDetector<Vga>;
 
 }  // namespace qt

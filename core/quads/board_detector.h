@@ -21,8 +21,11 @@ struct BoardParams {
     RefineParams refine;
 };
 
-template <class Lines, uint16_t PairCapacity, uint16_t MaxQuads>
+// Capacity: a base/capacity.h configuration (the lines stage's, parallel_pairs, quads).
+template <class Capacity>
 class BoardDetector {
+    using Lines = LineDetector<Capacity>;
+    static constexpr uint16_t PairCapacity = Capacity::parallel_pairs, MaxQuads = Capacity::quads;
     static_assert(Lines::max_lines() > 4 * MaxQuads,
                   "room for the completed sides beside the kept quadrangles' lines");
 
@@ -172,8 +175,8 @@ private:
 };
 
 // QVGA: the QVGA lines stage, 128 parallel pairs, the best 4 quadrangles.
-using BoardDetectorQvga = BoardDetector<LineDetectorQvga, 128, 4>;
+using BoardDetectorQvga = BoardDetector<Qvga>;
 // VGA: the VGA lines stage, 256 parallel pairs, the best 4 quadrangles.
-using BoardDetectorVga = BoardDetector<LineDetectorVga, 256, 4>;
+using BoardDetectorVga = BoardDetector<Vga>;
 
 }  // namespace qt

@@ -46,7 +46,7 @@
 
 namespace qt {
 
-struct HarrisConfig {
+struct HarrisParams {
     // Floor on the response (units of Feature::response, grey levels^4); values below 1 act
     // as 1. Default 10^7: a right-angled step corner of contrast C peaks at 1319·C⁴ with the
     // 5×5 window (worked in tests/target/test_harris.cpp), so this keeps corners of contrast >= 10
@@ -89,7 +89,7 @@ public:
     // grid_cols·grid_rows·per_cell > MaxFeatures (refused, not clamped: the caller chose the
     // spread). previous_frame_incomplete when a frame in progress was abandoned (the new
     // frame has started all the same).
-    Status begin_frame(uint16_t width, uint16_t height, const HarrisConfig& config) {
+    Status begin_frame(uint16_t width, uint16_t height, const HarrisParams& config) {
         const bool abandoned = in_frame_;
         in_frame_ = false;
         if (width == 0 || height == 0 || width > MaxWidth || height > kMaxHeight)
@@ -341,7 +341,7 @@ private:
     // During a frame cell c owns items[c·per_cell, (c+1)·per_cell); finish() sorts them.
     FeatureSet<PatchRadius, MaxFeatures> kept_;
     uint8_t cell_count_[MaxFeatures] = {};  // cells <= slots <= MaxFeatures
-    HarrisConfig config_;
+    HarrisParams config_;
     HarrisStats stats_;
     uint16_t width_ = 0, height_ = 0, pixel_rows_ = 0, gradient_rows_ = 0;
     bool in_frame_ = false;
@@ -353,7 +353,7 @@ private:
 template <uint16_t MaxWidth, uint16_t MaxFeatures, int PatchRadius, int WindowRadius>
 Status detect_features(HarrisDetector<MaxWidth, MaxFeatures, PatchRadius, WindowRadius>& det,
                        const uint8_t* frame, uint16_t width, uint16_t height, uint32_t stride,
-                       const HarrisConfig& config, FeatureSet<PatchRadius, MaxFeatures>& out) {
+                       const HarrisParams& config, FeatureSet<PatchRadius, MaxFeatures>& out) {
     out.count = 0;
     Status s = det.begin_frame(width, height, config);
     if (s == Status::previous_frame_incomplete) s = Status::ok;

@@ -86,7 +86,7 @@ NccScore ncc_q15(const uint8_t* a, uint32_t a_stride, const uint8_t* b, uint32_t
 // The matcher at the QVGA configuration, so that the library build and the float-free check
 // compile the template.
 template uint16_t match_features<4, 96, 96>(const FeatureSet<4, 96>&, const FeatureSet<4, 96>&,
-                                            const MatchConfig&, FeatureMatch*, uint16_t,
+                                            const MatchParams&, FeatureMatch*, uint16_t,
                                             MatchStats*);
 
 }  // namespace qt

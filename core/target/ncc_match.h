@@ -47,7 +47,7 @@ NccScore ncc_from_sums(const NccSums& s, uint32_t min_variance = kNccMinVariance
 NccScore ncc_q15(const uint8_t* a, uint32_t a_stride, const uint8_t* b, uint32_t b_stride,
                  uint16_t w, uint16_t h, uint32_t min_variance = kNccMinVariance);
 
-struct MatchConfig {
+struct MatchParams {
     uint16_t search_radius_px = 24;      // |cur − (prev + offset)| <= this in x and y each, px
     int16_t offset_x = 0, offset_y = 0;  // expected displacement prev → cur, px
     int16_t min_score_q15 = 26214;       // 0.8
@@ -103,7 +103,7 @@ uint32_t patch_dot(const Feature<R>& a, const Feature<R>& b) {
 // written.
 template <int R, uint16_t N1, uint16_t N2>
 uint16_t match_features(const FeatureSet<R, N1>& prev, const FeatureSet<R, N2>& cur,
-                        const MatchConfig& config, FeatureMatch* out, uint16_t capacity,
+                        const MatchParams& config, FeatureMatch* out, uint16_t capacity,
                         MatchStats* stats = nullptr) {
     constexpr uint32_t kN = Feature<R>::kSide * Feature<R>::kSide;
     constexpr uint16_t kNone = 0xFFFF;

@@ -75,8 +75,8 @@ uint8_t predict_axis(KalmanAxis& ax, int64_t q_cov) {
                              static_cast<int64_t>(isqrt64(static_cast<uint64_t>(ax.vv)));
         ax.pv = clamp64(ax.pv, -bmax, bmax);
     }
-    return static_cast<uint8_t>((cov_sat ? kalman_covariance_saturated : 0) |
-                                (state_sat ? kalman_state_saturated : 0));
+    return static_cast<uint8_t>((cov_sat ? KalmanFlags::covariance_saturated : 0) |
+                                (state_sat ? KalmanFlags::state_saturated : 0));
 }
 
 // One axis: the measurement update with z (px). Returns the flags.
@@ -102,7 +102,7 @@ uint8_t update_axis(KalmanAxis& ax, q16_16 z, int64_t r_cov) {
     ax.pp = mul_shr_round(ax.pp, g, kPosGainFrac);
     ax.pv = mul_shr_round(b_old, g, kPosGainFrac);
     ax.vv = clamp64(ax.vv - mul_shr_round(b_old, k.k_vel, kVelGainFrac), 0, kCeil);
-    return state_sat ? kalman_state_saturated : 0;
+    return state_sat ? KalmanFlags::state_saturated : 0;
 }
 
 int64_t to_cov(q16_16 v) { return static_cast<int64_t>(v.raw) * pow2(kToCov); }

@@ -105,15 +105,15 @@ struct KalmanGain {
 
 // One axis on its own, for filters built from it (the line tracker's angle, turn model).
 // Position pos, velocity 0, P = diag(p0_pos, p0_vel); q and r as in KalmanParams, clamped into
-// their ranges. predict and update return KalmanFlag bits.
+// their ranges. predict and update return KalmanFlags bits.
 KalmanAxis kalman_axis_init(q16_16 pos, q16_16 p0_pos, q16_16 p0_vel);
 uint8_t kalman_axis_predict(KalmanAxis& ax, q16_16 q);
 uint8_t kalman_axis_update(KalmanAxis& ax, q16_16 z, q16_16 r);
 
 // Flag bits of PointKalman::flags().
-enum KalmanFlag : uint8_t {
-    kalman_covariance_saturated = 1,  // P hit kCovCeiling: re-initialise
-    kalman_state_saturated = 2,       // a position or velocity hit the q16_16 range: re-initialise
+struct KalmanFlags {
+    static constexpr uint8_t covariance_saturated = 1;  // P hit kCovCeiling: re-initialise
+    static constexpr uint8_t state_saturated = 2;  // a position or velocity hit the q16_16 range
 };
 
 // The paper's filter on one point (§2.6), x and y axes independent (see the top of the file).
@@ -138,7 +138,7 @@ public:
     KalmanGain gain_x() const;  // the gains the next update() uses on x
     KalmanGain gain_y() const;
 
-    uint8_t flags() const { return flags_; }  // KalmanFlag bits, sticky until init()
+    uint8_t flags() const { return flags_; }  // KalmanFlags bits, sticky until init()
     bool saturated() const { return flags_ != 0; }
 
 private:

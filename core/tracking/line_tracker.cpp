@@ -128,7 +128,7 @@ uint8_t LineTracker::flags() const {
     } else {
         sat = sat || offset_.flags() != 0;
     }
-    return sat ? line_tracker_saturated : 0;
+    return sat ? LineTrackerFlags::saturated : 0;
 }
 
 Segment LineTracker::finish(angle_t theta, int64_t rho_raw) const {

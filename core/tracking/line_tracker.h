@@ -93,8 +93,8 @@ struct LineTrackerParams {
 LineTrackerParams default_line_tracker_params(uint16_t width, uint16_t height);
 
 // Flag bits of LineTracker::flags(): a filter saturated; the track should be dropped.
-enum LineTrackerFlag : uint8_t {
-    line_tracker_saturated = 1,
+struct LineTrackerFlags {
+    static constexpr uint8_t saturated = 1;
 };
 
 class LineTracker {

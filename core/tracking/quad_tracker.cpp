@@ -70,12 +70,12 @@ bool QuadTracker::agrees(const TrackedQuad& tracked, const Quad& detected) const
     return true;
 }
 
-const char* quad_track_lost_name(uint8_t reason) {
+const char* quad_track_lost_name(QuadTrackLost reason) {
     switch (reason) {
-        case lost_side_unseen: return "side_unseen";
-        case lost_shape: return "shape";
-        case lost_saturated: return "saturated";
-        case lost_detection_disagrees: return "detection_disagrees";
+        case QuadTrackLost::side_unseen: return "side_unseen";
+        case QuadTrackLost::shape: return "shape";
+        case QuadTrackLost::saturated: return "saturated";
+        case QuadTrackLost::detection_disagrees: return "detection_disagrees";
         default: return nullptr;
     }
 }
@@ -131,9 +131,9 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
         }
         Point16 corners[4];
         uint8_t detected = 0;
-        uint8_t lost = 0;
+        QuadTrackLost lost = QuadTrackLost::none;
         if (!corners_of(predicted, params_.shape, corners)) {
-            lost = lost_shape;
+            lost = QuadTrackLost::shape;
         } else {
             // Association: each side takes the longest gated line; a line serves one side. A
             // frame without lines leaves every side unmatched (and counted in missed_).
@@ -172,11 +172,12 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
             Segment current[4];
             for (int i = 0; i < 4; ++i) {
                 current[i] = sides_[i].line();
-                if (missed_[i] > params_.max_predicted) lost = lost_side_unseen;
-                if (sides_[i].flags() != 0) lost = lost_saturated;
+                if (missed_[i] > params_.max_predicted) lost = QuadTrackLost::side_unseen;
+                if (sides_[i].flags() != 0) lost = QuadTrackLost::saturated;
             }
-            if (lost == 0 && !corners_of(current, params_.shape, corners)) lost = lost_shape;
-            if (lost == 0) {
+            if (lost == QuadTrackLost::none && !corners_of(current, params_.shape, corners))
+                lost = QuadTrackLost::shape;
+            if (lost == QuadTrackLost::none) {
                 TrackedQuad out;
                 out.state = TrackState::tracking;
                 out.track_id = track_id_;
@@ -190,7 +191,7 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
                     ++age_;
                     return out;
                 }
-                lost = lost_detection_disagrees;
+                lost = QuadTrackLost::detection_disagrees;
             }
         }
         // Lost: start again from this frame's detection, if there is one.

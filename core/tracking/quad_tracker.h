@@ -71,21 +71,23 @@ struct TrackedQuad {
     uint32_t age = 0;         // frames since the track started (0 on the start frame)
 };
 
+// Why a track ended (the C API's qt_track_lost has the same values).
+enum class QuadTrackLost : uint8_t {
+    none = 0,                 // no track ended this frame
+    side_unseen = 1,          // a side predicted for more than max_predicted frames
+    shape = 2,                // no convex quadrangle with sides in range
+    saturated = 3,            // a filter saturated
+    detection_disagrees = 4,  // no side matched, and the detection is elsewhere
+};
+
 // What the last step() did, for tuning and for the JSON.
 struct QuadTrackStats {
-    uint8_t lost_reason = 0;  // QuadTrackLost of the track that ended this frame, 0 if none
+    QuadTrackLost lost_reason = QuadTrackLost::none;  // of the track that ended this frame
 };
 
-enum QuadTrackLost : uint8_t {
-    lost_side_unseen = 1,          // a side predicted for more than max_predicted frames
-    lost_shape = 2,                // no convex quadrangle with sides in range
-    lost_saturated = 3,            // a filter saturated
-    lost_detection_disagrees = 4,  // no side matched, and the detection is elsewhere
-};
-
-// The JSON name of a QuadTrackLost reason ("side_unseen", "shape", "saturated",
-// "detection_disagrees"), or nullptr for 0 (no track lost) and unknown values.
-const char* quad_track_lost_name(uint8_t reason);
+// The JSON name of a reason ("side_unseen", "shape", "saturated", "detection_disagrees"), or
+// nullptr for none and unknown values.
+const char* quad_track_lost_name(QuadTrackLost reason);
 
 class QuadTracker {
 public:

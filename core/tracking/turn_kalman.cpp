@@ -131,8 +131,8 @@ void TurnKalman::predict(q16_16 omega_deg, q16_16 q) {
         p_[2] = clamp64(p_[2], -s0 * s2, s0 * s2);
         p_[4] = clamp64(p_[4], -s1 * s2, s1 * s2);
     }
-    flags_ = static_cast<uint8_t>(flags_ | (cov_sat ? turn_covariance_saturated : 0) |
-                                  (state_sat ? turn_state_saturated : 0));
+    flags_ = static_cast<uint8_t>(flags_ | (cov_sat ? TurnKalmanFlags::covariance_saturated : 0) |
+                                  (state_sat ? TurnKalmanFlags::state_saturated : 0));
 }
 
 void TurnKalman::update(q16_16 z, q16_16 r) {
@@ -159,7 +159,7 @@ void TurnKalman::update(q16_16 z, q16_16 r) {
     p_[3] = clamp64(p_[3] - mul_shr_round(k1, p01, kGainFrac), 0, kCeil);
     p_[4] = clamp64(p_[4] - mul_shr_round(k1, p02, kGainFrac), -kCeil, kCeil);
     p_[5] = clamp64(p_[5] - mul_shr_round(k2, p02, kGainFrac), 0, kCeil);
-    if (state_sat) flags_ = static_cast<uint8_t>(flags_ | turn_state_saturated);
+    if (state_sat) flags_ = static_cast<uint8_t>(flags_ | TurnKalmanFlags::state_saturated);
 }
 
 q16_16 TurnKalman::rho() const { return q16_16::from_raw(shr_round_half_away(x_[0], kToState)); }

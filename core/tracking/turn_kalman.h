@@ -24,7 +24,7 @@
 // | A entries     | 1               | q2_30                       | |a| <= 1 (3)               |
 // | ω             | °/frame         | q16_16 in, rad q2_30 inside | ±45                        |
 // | q, r          | px²/frame⁶, px² | q16_16 (params)             | q [0, 1024], r [1/16, 1024] |
-// (1) and the flag turn_state_saturated is set; (2) |Pij| <= √(Pii·Pjj) once clamped; (3) ω is
+// (1) and TurnKalmanFlags::state_saturated is set; (2) |Pij| <= √(Pii·Pjj) once clamped; (3) ω is
 // clamped to ±kMaxTurnDeg.
 // Every product is formed in 128 bits (mul_shr_round) and rounded half away from zero; the
 // transition coefficients come from Taylor series in ω² (no division, no float), truncation
@@ -38,9 +38,10 @@
 
 namespace qt {
 
-enum TurnKalmanFlag : uint8_t {
-    turn_covariance_saturated = 1,  // a variance hit the ceiling
-    turn_state_saturated = 2,       // ρ, ρ' or ρ'' hit ±2^15
+// Flag bits of TurnKalman::flags().
+struct TurnKalmanFlags {
+    static constexpr uint8_t covariance_saturated = 1;  // a variance hit the ceiling
+    static constexpr uint8_t state_saturated = 2;       // ρ, ρ' or ρ'' hit ±2^15
 };
 
 // The transition coefficients of A for one turn rate, q2_30.
@@ -70,7 +71,7 @@ public:
     q16_16 rho() const;                          // px, rounded half away
     const int64_t* state() const { return x_; }  // ρ, ρ', ρ'', 32 fraction bits
     const int64_t* cov() const { return p_; }    // P00 P01 P02 P11 P12 P22, 32 fraction bits
-    uint8_t flags() const { return flags_; }     // TurnKalmanFlag bits, sticky until init()
+    uint8_t flags() const { return flags_; }     // TurnKalmanFlags bits, sticky until init()
 
 private:
     int64_t x_[3] = {0, 0, 0};

@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
         Stats ours, cv_ransac, cv_rho;
         for (int t = 0; t < trials; ++t) {
             const Trial tr = make_trial(static_cast<uint64_t>(1000 * pct + t), pct / 100.0);
-            qt::RansacConfig cfg;
+            qt::RansacParams cfg;
             cfg.inlier_px = kThresholdPx;
             cfg.seed = static_cast<uint64_t>(t + 1);
             const auto t0 = Clock::now();

@@ -427,10 +427,12 @@ void vga_time() {
 
 template <class Det>
 struct Caps;
-template <uint16_t W, uint16_t H, uint16_t E, uint32_t B, uint16_t T, uint16_t S, uint16_t L>
-struct Caps<qt::LineDetector<W, H, E, B, T, S, L>> {
-    static constexpr uint32_t width = W, height = H, edges = E, bins = B, theta = T, segments = S,
-                              lines = L;
+template <class C>
+struct Caps<qt::LineDetector<C>> {
+    static constexpr uint32_t width = C::max_width, height = C::max_height, edges = C::edge_points,
+                              bins = qt::hough_bins_for(C::max_width, C::max_height, C::theta_bins,
+                                                        C::rho_step),
+                              theta = C::theta_bins, segments = C::segments, lines = C::lines;
 };
 
 struct RamColumn {

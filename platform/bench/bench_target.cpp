@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
         reset_plot.title =
             "Reset of the accumulated homography (Table III), seed " + std::to_string(seed);
         for (size_t v = 0; v < nv; ++v) {
-            qt::TargetPipelineConfig config =
+            qt::TargetPipelineParams config =
                 qt::cli::qvga_target_config(kVariants[v].method, kVariants[v].reset);
             config.tracker.kalman.q_pos = kVariants[v].q_pos;
             config.tracker.kalman.q_vel = kVariants[v].q_vel;

@@ -237,12 +237,12 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
         QuadStats qs;
         detect_quads(lines, n, kW, kH, QuadParams{}, pairs, 64, normals, quads, 4, &count, &qs);
         const TrackedQuad out = tracker.step(n > 0 ? lines : nullptr, n, quads, count);
-        const uint8_t lost = tracker.stats().lost_reason;
+        const QuadTrackLost lost = tracker.stats().lost_reason;
         // missed_ counts restart with a track: side_unseen needs max_predicted + 1 frames of it.
-        if (lost == lost_side_unseen && last_age + 1 < static_cast<uint32_t>(max_gap))
+        if (lost == QuadTrackLost::side_unseen && last_age + 1 < static_cast<uint32_t>(max_gap))
             fail(k, words("track lost for a side unseen at age %u", last_age + 1));
-        if (lost != 0) {
-            ++res.lost[lost < 5 ? lost : 0];
+        if (lost != QuadTrackLost::none) {
+            ++res.lost[static_cast<uint8_t>(lost) < 5 ? static_cast<uint8_t>(lost) : 0];
             if (k > last_loss_window_end && !in_burst && current < 0) ++res.lost_outside_bursts;
         }
         res.tracks_started += out.state == TrackState::started;

@@ -97,7 +97,7 @@ struct QuadSoakResult {
     uint32_t bursts = 0, long_bursts = 0;  // long: more than max_predicted frames
     uint32_t full_frames = 0;              // frames showing all four sides
     uint32_t tracks_started = 0;
-    uint32_t lost[5] = {};             // tracks lost, by QuadTrackLost reason (index 0 unused)
+    uint32_t lost[5] = {};             // tracks lost, by QuadTrackLost value (index 0 unused)
     uint32_t lost_outside_bursts = 0;  // losses away from bursts and their recovery (not a rule:
                                        //   the tracker's own "price", a side predicted beyond the
                                        //   gate until it is given up; 0 for the paper's model here)

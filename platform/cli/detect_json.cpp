@@ -102,8 +102,8 @@ std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t 
     return out;
 }
 
-std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t, uint8_t lost_reason,
-                       uint16_t display_width, uint16_t display_height) {
+std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t,
+                       QuadTrackLost lost_reason, uint16_t display_width, uint16_t display_height) {
     const bool has_quad = t.state != TrackState::none;
     std::string out = "{\"frame\":" + std::to_string(frame) + ",";
     frame_fields(out, r);

@@ -32,8 +32,8 @@ namespace qt::cli {
 std::string detect_json(const DetectResult& result, uint16_t display_width,
                         uint16_t display_height);
 
-// lost_reason: QuadTracker::stats().lost_reason (a QuadTrackLost, 0 for none).
+// lost_reason: QuadTracker::stats().lost_reason.
 std::string track_json(int frame, const DetectResult& result, const TrackedQuad& quad,
-                       uint8_t lost_reason, uint16_t display_width, uint16_t display_height);
+                       QuadTrackLost lost_reason, uint16_t display_width, uint16_t display_height);
 
 }  // namespace qt::cli

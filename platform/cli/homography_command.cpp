@@ -24,7 +24,7 @@ using Detector = HarrisDetector<640, 160>;
 using Features = FeatureSet<4, 160>;
 
 // Reads one image and finds its corners; false with one line in `error`.
-bool corners_of(const std::string& path, const HarrisConfig& config, Detector& detector,
+bool corners_of(const std::string& path, const HarrisParams& config, Detector& detector,
                 Features& out, std::string& error) {
     io::GreyImage image;
     if (!io::read_image(path, image, error)) return false;

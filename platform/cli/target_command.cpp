@@ -29,7 +29,6 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
     if (parsed >= 0) return parsed;
     const std::string& spec = positional[0];
     auto pipeline = std::make_unique<CliTargetPipeline>();  // ~120 KB: heap, not stack
-    pipeline->configure(options.config);
     pipeline->set_target(options.roi_x, options.roi_y, static_cast<uint8_t>(options.roi_w),
                          static_cast<uint8_t>(options.roi_h));
     return for_each_frame(spec, "target", err, [&](int k, const io::GreyImage& frame) {
@@ -40,8 +39,8 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
                 width, height);
             return 1;
         }
-        Status s =
-            pipeline->begin_frame(static_cast<uint16_t>(width), static_cast<uint16_t>(height));
+        Status s = pipeline->begin_frame(static_cast<uint16_t>(width),
+                                         static_cast<uint16_t>(height), options.config);
         for (int y = 0; y < height && (s == Status::ok || s == Status::previous_frame_incomplete);
              ++y)
             s = pipeline->push_row(frame.row(y), static_cast<uint16_t>(width));

@@ -186,8 +186,8 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
 
 }  // namespace
 
-TargetPipelineConfig default_target_config() {
-    TargetPipelineConfig c;
+TargetPipelineParams default_target_config() {
+    TargetPipelineParams c;
     c.harris.grid_cols = 10;
     c.harris.grid_rows = 8;
     c.harris.per_cell = 2;

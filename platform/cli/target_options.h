@@ -12,19 +12,24 @@ namespace qt::cli {
 
 // The CLI's pipeline: frames up to 640 × 480, 160 corners a frame, templates up to 24 × 24 px,
 // search windows up to 48 px around the expected position.
-using CliTargetPipeline = TargetPipeline<640, 160, 4, 24, 160>;
+// VGA frames, templates up to 24 × 24 px and a captured region up to 160 px a side.
+struct CliTargetCapacity : Vga {
+    static constexpr uint8_t max_template = 24;
+    static constexpr uint16_t max_region = 160;
+};
+using CliTargetPipeline = TargetPipeline<CliTargetCapacity>;
 
 enum class GeometryCommand { homography, target };
 
 struct TargetOptions {
-    TargetPipelineConfig config;                     // defaults: default_target_config()
+    TargetPipelineParams config;                     // defaults: default_target_config()
     bool roi_set = false;                            // target: --roi is required
     int roi_x = 0, roi_y = 0, roi_w = 0, roi_h = 0;  // px, frame 0
     TargetOptions();
 };
 
-// The pipeline's defaults for the CLI (HarrisConfig for VGA-sized frames, the paper's Q).
-TargetPipelineConfig default_target_config();
+// The pipeline's defaults for the CLI (HarrisParams for VGA-sized frames, the paper's Q).
+TargetPipelineParams default_target_config();
 
 // The help lines of every flag of `command`: "  --name VALUE   text (unit, range; default d)".
 std::string target_options_help(GeometryCommand command);

@@ -119,7 +119,7 @@ bool run_demo_sequence(const std::string& out_dir) {
                 px(t.corners[2].y), px(t.corners[3].x), px(t.corners[3].y),
                 worst_corner_error(t, sc));
         }
-        if (turn.stats().lost_reason != 0)
+        if (turn.stats().lost_reason != QuadTrackLost::none)
             std::printf(", a track was lost: %s", quad_track_lost_name(turn.stats().lost_reason));
         if (p.state == TrackState::none) {
             std::printf("; 3KF: none");
@@ -128,7 +128,7 @@ bool run_demo_sequence(const std::string& out_dir) {
             side_letters(p, sides);
             std::printf("; 3KF: sides %s, %.2f px", sides, worst_corner_error(p, sc));
         }
-        if (paper.stats().lost_reason != 0)
+        if (paper.stats().lost_reason != QuadTrackLost::none)
             std::printf(", lost: %s", quad_track_lost_name(paper.stats().lost_reason));
         std::printf(" -> %s\n", name);
         std::string error;

@@ -27,11 +27,11 @@ TargetBox start_box(const scene::GroundTruth& truth0, int side = 15);
 // runs the QVGA pipeline with `config`, starting on start_box(frame 0). Frames larger than
 // 320 × 240 are refused (std::invalid_argument).
 std::vector<TargetRunFrame> run_target_sequence(const scene::GroundSequence& sequence,
-                                                const TargetPipelineConfig& config,
+                                                const TargetPipelineParams& config,
                                                 const std::vector<io::GreyImage>* frames = nullptr);
 
 // The configuration of the QVGA pipeline used by the bench, the tests and the demo.
-TargetPipelineConfig qvga_target_config(TargetMethod method = TargetMethod::fused,
+TargetPipelineParams qvga_target_config(TargetMethod method = TargetMethod::fused,
                                         bool reset = true);
 
 }  // namespace qt::cli

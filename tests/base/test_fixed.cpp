@@ -61,52 +61,15 @@ TEST_CASE("from_ratio is the nearest representable value", "[fixed]") {
         REQUIRE(q16_16::from_ratio(num, den).raw == ref_round_clamp(exact, INT32_MIN, INT32_MAX));
     }
     REQUIRE(q16_16::from_ratio(1, 2).raw == 32768);
+    using q1_15 = Fixed<15, int16_t>;               // a 16-bit format: range [-1, 1)
     REQUIRE(q1_15::from_ratio(1, 1).raw == 32767);  // 1.0 saturates in q1_15
     REQUIRE(q1_15::from_ratio(-1, 1).raw == -32768);
     REQUIRE(q16_16::from_int(40000).raw == INT32_MAX);
 }
 
-TEST_CASE("rescale narrows with half-away rounding, widens exactly, saturates (exhaustive int16)",
-          "[fixed]") {
-    using q4_12 = Fixed<12, int16_t>;
-    using q12_4 = Fixed<4, int16_t>;
-    for (int32_t raw = -32768; raw <= 32767; ++raw) {
-        const q4_12 a = q4_12::from_raw(raw);
-        const double real = raw / 4096.0;
-        REQUIRE(rescale<q12_4>(a).raw == ref_round_clamp(real * 16.0, -32768, 32767));
-        const q12_4 b = q12_4::from_raw(raw);
-        REQUIRE(rescale<q4_12>(b).raw == ref_round_clamp(raw / 16.0 * 4096.0, -32768, 32767));
-        REQUIRE(rescale<q16_16>(b).raw == static_cast<int64_t>(raw) * 4096);
-    }
-}
-
-TEST_CASE("mul and div against double", "[fixed]") {
-    Pcg32 rng(2);
-    for (int i = 0; i < 300000; ++i) {
-        const q16_16 a = q16_16::from_raw(static_cast<int32_t>(rng.next()));
-        const q16_16 b = q16_16::from_raw(static_cast<int32_t>(rng.next()) >> (rng.next() % 24));
-        const double ra = a.raw / 65536.0, rb = b.raw / 65536.0;
-        REQUIRE(mul<q16_16>(a, b).raw == ref_round_clamp(ra * rb * 65536.0, INT32_MIN, INT32_MAX));
-        const q2_30 c = q2_30::from_raw(static_cast<int32_t>(rng.next()));
-        const double rc = c.raw / 1073741824.0;
-        REQUIRE(mul<q16_16>(a, c).raw == ref_round_clamp(ra * rc * 65536.0, INT32_MIN, INT32_MAX));
-        if (b.raw != 0) {
-            const double q = ra / rb * 65536.0;
-            const int64_t got = div<q16_16>(a, b).raw;
-            // The quotient is exact in integers; double may be off by one ulp near .5 ties.
-            REQUIRE(std::fabs(static_cast<double>(got) - static_cast<double>(ref_round_clamp(
-                                                             q, INT32_MIN, INT32_MAX))) <= 1.0);
-        }
-    }
-    REQUIRE(div<q16_16>(q16_16::from_int(1), q16_16::from_raw(0)).raw == INT32_MAX);
-    REQUIRE(div<q16_16>(q16_16::from_int(-1), q16_16::from_raw(0)).raw == INT32_MIN);
-    REQUIRE(div<q16_16>(q16_16::from_int(0), q16_16::from_raw(0)).raw == 0);
-}
-
-TEST_CASE("add_sat, sub_sat and neg_sat saturate instead of overflowing", "[fixed]") {
-    const q16_16 big = q16_16::from_raw(INT32_MAX - 5), small = q16_16::from_raw(INT32_MIN + 5);
+TEST_CASE("add_sat and neg_sat saturate instead of overflowing", "[fixed]") {
+    const q16_16 big = q16_16::from_raw(INT32_MAX - 5);
     REQUIRE(add_sat(big, q16_16::from_int(1)).raw == INT32_MAX);
-    REQUIRE(sub_sat(small, q16_16::from_int(1)).raw == INT32_MIN);
     REQUIRE(neg_sat(q16_16::from_raw(INT32_MIN)).raw == INT32_MAX);
     REQUIRE(add_sat(q16_16::from_ratio(3, 2), q16_16::from_ratio(1, 4)) ==
             q16_16::from_ratio(7, 4));

@@ -103,7 +103,7 @@ void check_target(const qt::cli::TargetOptions& o, bool target) {
     QT_FUZZ_CHECK(real_in(t.reset_nds, 0, 1e6) && real_in(t.reset_det_s, 0, 1e12));
     QT_FUZZ_CHECK(real_in(t.min_score, -1, 1) && real_in(t.max_radius_px, 1, 48));
     QT_FUZZ_CHECK(t.max_unseen >= 1);
-    const qt::FrameHomographyConfig& g = o.config.geometry;
+    const qt::FrameHomographyParams& g = o.config.geometry;
     QT_FUZZ_CHECK(g.match.search_radius_px >= 1 && g.match.search_radius_px <= 128);
     QT_FUZZ_CHECK(real_in(g.ransac.inlier_px, 0.05, 50));
     QT_FUZZ_CHECK(g.ransac.max_iterations >= 1 && g.ransac.seed <= 2147483647u);

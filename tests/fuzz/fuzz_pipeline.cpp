@@ -163,6 +163,7 @@ struct Run {
     Pattern pattern;
     FrameModel bm, tm;  // board, target
     qt::BoardParams params;
+    qt::TargetPipelineParams target_params;  // each input starts from the defaults
     uint16_t tracker_w = 0, tracker_h = 0;
     uint32_t last_track_id = 0;
     bool tracker_active = false;
@@ -315,7 +316,7 @@ struct Run {
     void check_tracked(const qt::TrackedQuad& t) {
         QT_FUZZ_CHECK(t.state == qt::TrackState::none || t.state == qt::TrackState::started ||
                       t.state == qt::TrackState::tracking);
-        QT_FUZZ_CHECK(tracker.stats().lost_reason <= qt::lost_detection_disagrees);
+        QT_FUZZ_CHECK(tracker.stats().lost_reason <= qt::QuadTrackLost::detection_disagrees);
         if (t.state == qt::TrackState::none) {
             QT_FUZZ_CHECK(!tracker.tracking());
             tracker_active = false;
@@ -417,7 +418,7 @@ struct Run {
     }
 
     void target_begin(uint16_t w, uint16_t h) {
-        const Status s = target.begin_frame(w, h);
+        const Status s = target.begin_frame(w, h, target_params);
         QT_FUZZ_CHECK(valid(s));
         const bool refuse = w == 0 || h == 0 || w > kTargetW || h > kTargetH;
         if (refuse) {
@@ -493,7 +494,7 @@ struct Run {
             QT_FUZZ_CHECK(std::strcmp(qt::target_state_name(out.estimate.state), "unknown") != 0);
             if (out.estimate.state != qt::TargetState::lost)
                 QT_FUZZ_CHECK(std::isfinite(out.estimate.x) && std::isfinite(out.estimate.y));
-            const qt::TargetTrackerParams& p = target.config().tracker;
+            const qt::TargetTrackerParams& p = target.params().tracker;
             const float most =
                 p.max_radius_px > p.template_radius_px ? p.max_radius_px : p.template_radius_px;
             QT_FUZZ_CHECK(std::isfinite(out.window.radius) && out.window.radius >= 0 &&
@@ -505,9 +506,7 @@ struct Run {
     }
 
     void configure(uint8_t method, uint8_t flags) {
-        qt::TargetPipelineConfig c = target.config();
-        c.tracker.method = static_cast<qt::TargetMethod>(method % 4);
-        target.configure(c);
+        target_params.tracker.method = static_cast<qt::TargetMethod>(method % 4);
         if (flags & 1) {
             tracker.reset();
             tracker_active = false;

@@ -14,6 +14,14 @@ namespace {
 
 LineDetectorQvga g_det;
 
+// QVGA with small segment and line lists, to fill them.
+struct ThreeSegmentsTwoLines : Qvga {
+    static constexpr uint16_t segments = 3, lines = 2;
+};
+struct FourSegments : Qvga {
+    static constexpr uint16_t segments = 4, lines = 4;
+};
+
 Status detect(const io::GreyImage& img, const LineParams& p) {
     REQUIRE(g_det.begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height),
                               p) == Status::ok);
@@ -154,7 +162,7 @@ TEST_CASE("degenerate frames: blank, all-edge noise, one pixel, lines along ever
 
 TEST_CASE("limits are reported: segment capacity, walk budget, bad parameters", "[hough]") {
     const io::GreyImage img = polygon_frame(43);
-    LineDetector<320, 240, 4096, hough_bins_for(320, 240, 90, 2), 90, 3, 2> small;
+    LineDetector<ThreeSegmentsTwoLines> small;
     LineParams p;
     REQUIRE(small.begin_frame(320, 240, p) == Status::ok);
     for (int y = 0; y < 240; ++y) REQUIRE(small.push_row(img.row(y), 320) == Status::ok);
@@ -251,7 +259,7 @@ TEST_CASE("a full segment list keeps the longest segments, whatever the visiting
         ls.add_polygon({{x, y}, {x + w, y}, {x + w, y + 10}, {x, y + 10}}, 200);
     }
     const io::GreyImage img = ls.render();
-    static LineDetector<320, 240, 4096, hough_bins_for(320, 240, 90, 2), 90, 4, 4> small;
+    static LineDetector<FourSegments> small;
     for (uint64_t seed = 1; seed <= 6; ++seed) {
         LineParams p;
         p.hough.seed = seed;

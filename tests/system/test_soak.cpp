@@ -106,7 +106,7 @@ TEST_CASE("soak: quadrangle tracker, 10^5 frames, 30 % of sides missed, bursts o
     // those losing the track (side_unseen) and a new one starting after it.
     CHECK(r.bursts >= 250);
     CHECK(r.long_bursts >= 100);
-    CHECK(r.lost[lost_side_unseen] >= r.long_bursts);
+    CHECK(r.lost[static_cast<int>(QuadTrackLost::side_unseen)] >= r.long_bursts);
     CHECK(r.tracks_started > r.long_bursts);
     // Recovery (in r.breaks, per burst): a long burst's track is gone from the burst's
     // (max_predicted + 1)-th frame and a new one starts in exactly the first frame after it that
@@ -168,8 +168,8 @@ struct PipelineRun {
     std::unique_ptr<TargetPipelineQvga> pipe = std::make_unique<TargetPipelineQvga>();
     TargetFrame out;
     Status frame(const io::GreyImage& img) {
-        Status s =
-            pipe->begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height));
+        Status s = pipe->begin_frame(static_cast<uint16_t>(img.width),
+                                     static_cast<uint16_t>(img.height), TargetPipelineParams{});
         for (int y = 0; y < img.height && s == Status::ok; ++y)
             s = pipe->push_row(img.row(y), static_cast<uint16_t>(img.width));
         return s == Status::ok ? pipe->finish(out) : s;
@@ -199,7 +199,6 @@ TEST_CASE(
     };
     const TargetTrackerParams params;
     PipelineRun run;
-    run.pipe->configure(TargetPipelineConfig{});
     auto start_on = [&](int k) {
         const scene::GroundTruth t = seq.truth(k);
         REQUIRE(run.pipe->set_target(static_cast<int32_t>(t.target_x + 0.5) - 7,

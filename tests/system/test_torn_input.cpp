@@ -295,7 +295,7 @@ struct HarrisAdapter {
     std::unique_ptr<Det> det = std::make_unique<Det>();
     std::vector<uint8_t> px;
     std::vector<gradient_word> wd;
-    Status begin(uint16_t w, uint16_t h) { return det->begin_frame(w, h, HarrisConfig{}); }
+    Status begin(uint16_t w, uint16_t h) { return det->begin_frame(w, h, HarrisParams{}); }
     Status push(const Frame& f, int y, uint16_t len) {
         const uint16_t plen = Words ? static_cast<uint16_t>(f.w) : len;
         const Status s = det->push_pixel_row(row_of(f.row(y), f.w, plen, px), plen);
@@ -370,7 +370,6 @@ struct TargetAdapter {
     TargetFrame out;
     std::vector<uint8_t> px;
     TargetAdapter() {
-        pipe->configure(TargetPipelineConfig{});
         if (Track) {
             const scene::GroundTruth t = ground().truth(0);
             REQUIRE(pipe->set_target(static_cast<int32_t>(t.target_x + 0.5) - 7,
@@ -378,7 +377,7 @@ struct TargetAdapter {
                                      15) == Status::ok);
         }
     }
-    Status begin(uint16_t w, uint16_t h) { return pipe->begin_frame(w, h); }
+    Status begin(uint16_t w, uint16_t h) { return pipe->begin_frame(w, h, TargetPipelineParams{}); }
     Status push(const Frame& f, int y, uint16_t len) {
         return pipe->push_row(row_of(f.row(y), f.w, len, px), len);
     }

@@ -107,8 +107,8 @@ std::vector<RefCorner> ref_harris(const Image& im, int V, int R, double floor) {
     return out;
 }
 
-HarrisConfig config(int64_t floor, int cols, int rows, int per_cell) {
-    HarrisConfig c;
+HarrisParams config(int64_t floor, int cols, int rows, int per_cell) {
+    HarrisParams c;
     c.min_response = floor;
     c.grid_cols = static_cast<uint8_t>(cols);
     c.grid_rows = static_cast<uint8_t>(rows);
@@ -117,7 +117,7 @@ HarrisConfig config(int64_t floor, int cols, int rows, int per_cell) {
 }
 
 template <uint16_t MW, uint16_t MF, int R, int V>
-Status detect(HarrisDetector<MW, MF, R, V>& det, const Image& im, const HarrisConfig& c,
+Status detect(HarrisDetector<MW, MF, R, V>& det, const Image& im, const HarrisParams& c,
               FeatureSet<R, MF>& out) {
     return detect_features(det, im.px.data(), static_cast<uint16_t>(im.w),
                            static_cast<uint16_t>(im.h), static_cast<uint32_t>(im.w), c, out);
@@ -258,7 +258,7 @@ TEST_CASE("Harris default floor drops a corner of contrast 8 and keeps one of 11
         fill_rect(im, 24, 24, 47, 47, 100 + contrast);  // one corner at (24, 24)
         static HarrisDetector<64, 96, 4, 2> det;
         static FeatureSet<4, 96> out;
-        REQUIRE(detect(det, im, HarrisConfig{}, out) == Status::ok);
+        REQUIRE(detect(det, im, HarrisParams{}, out) == Status::ok);
         REQUIRE(out.count == (contrast == 11 ? 1 : 0));
         REQUIRE(det.stats().weak == (contrast == 11 ? 0u : 1u));
     }
@@ -269,7 +269,7 @@ TEST_CASE("Harris rows in any order the contract allows give the same corners", 
     const auto grads = gradient_rows(im);
     static HarrisDetector<128, 255, 4, 2> det;
     static FeatureSet<4, 255> ref_out, out;
-    const HarrisConfig c = config(1000000, 1, 1, 255);
+    const HarrisParams c = config(1000000, 1, 1, 255);
     REQUIRE(detect(det, im, c, ref_out) == Status::ok);
     REQUIRE(ref_out.count >= 20);
     for (int lag : {0, 1, 2}) {  // gradient row y right after pixel row y + lag
@@ -332,7 +332,7 @@ TEST_CASE("Harris capacity: MaxFeatures of the strongest, over-large grids refus
     require_same(out, std::vector<RefCorner>(all.begin(), all.begin() + 8), im);
     REQUIRE(det.stats().replaced + det.stats().dropped == all.size() - 8);
     // The default 8×6×2 grid needs 96 slots.
-    REQUIRE(det.begin_frame(120, 90, HarrisConfig{}) == Status::bad_size);
+    REQUIRE(det.begin_frame(120, 90, HarrisParams{}) == Status::bad_size);
     REQUIRE(det.begin_frame(120, 90, config(1, 3, 1, 3)) == Status::bad_size);
     REQUIRE(det.begin_frame(120, 90, config(1, 0, 1, 1)) == Status::bad_size);
     REQUIRE(det.begin_frame(120, 90, config(1, 1, 1, 0)) == Status::bad_size);
@@ -343,7 +343,7 @@ TEST_CASE("Harris capacity: MaxFeatures of the strongest, over-large grids refus
 TEST_CASE("Harris sizes and lengths", "[harris]") {
     static HarrisDetector<64, 96, 4, 2> det;
     static FeatureSet<4, 96> out;
-    const HarrisConfig c;
+    const HarrisParams c;
     REQUIRE(det.begin_frame(0, 10, c) == Status::bad_size);
     REQUIRE(det.begin_frame(10, 0, c) == Status::bad_size);
     REQUIRE(det.begin_frame(65, 10, c) == Status::bad_size);
@@ -370,7 +370,7 @@ TEST_CASE("Harris sizes and lengths", "[harris]") {
 TEST_CASE("Harris row-order violations give bad_row_order and abandon the frame", "[harris]") {
     static HarrisDetector<64, 96, 4, 2> det;
     static FeatureSet<4, 96> out;
-    const HarrisConfig c;
+    const HarrisParams c;
     std::vector<uint8_t> row(16, 7);
     std::vector<gradient_word> grad(16, 0);
     SECTION("gradient row before its pixel row") {

@@ -450,7 +450,7 @@ TEST_CASE("refit_homography: exact on exact data, refuses collinear or too few",
 
 TEST_CASE("RANSAC recovers a known inter-frame H through noise and 0/25/50 % outliers",
           "[homography]") {
-    RansacConfig cfg;  // 2 px, c = 0.995, 1000 iterations
+    RansacParams cfg;  // 2 px, c = 0.995, 1000 iterations
     for (double frac : {0.0, 0.25, 0.5}) {
         double sum_mean = 0, worst = 0, sum_rep = 0;
         int max_it = 0;
@@ -487,7 +487,7 @@ TEST_CASE("RANSAC recovers a known inter-frame H through noise and 0/25/50 % out
 
 TEST_CASE("RANSAC is deterministic: same pairs and seed, same bits", "[homography]") {
     const Scenario s = make_scenario(4242, 200, 0.4, 0.5, 10);
-    RansacConfig cfg;
+    RansacParams cfg;
     cfg.seed = 123;
     std::vector<uint8_t> m1(200), m2(200);
     const RansacResult a = estimate_homography(s.pairs.data(), 200, cfg, m1.data());
@@ -509,7 +509,7 @@ TEST_CASE("RANSAC is deterministic: same pairs and seed, same bits", "[homograph
 }
 
 TEST_CASE("RANSAC statuses: too few pairs, degenerate, no consensus", "[homography]") {
-    RansacConfig cfg;
+    RansacParams cfg;
     const Scenario s = make_scenario(77, 60, 0.0, 0.5, 1.5);
     std::vector<uint8_t> mask(60, 9);
     RansacResult r = estimate_homography(s.pairs.data(), 3, cfg, mask.data());
@@ -523,7 +523,7 @@ TEST_CASE("RANSAC statuses: too few pairs, degenerate, no consensus", "[homograp
     std::vector<PointPair> line;
     for (int i = 0; i < 40; ++i)
         line.push_back({5.0f + 7 * i, 3.0f + 5 * i, 6.0f + 7 * i, 2.0f + 5 * i});
-    cfg = RansacConfig{};
+    cfg = RansacParams{};
     cfg.max_iterations = 300;
     r = estimate_homography(line.data(), 40, cfg, nullptr);
     CHECK(r.status == HomographyStatus::degenerate);
@@ -538,7 +538,7 @@ TEST_CASE("RANSAC statuses: too few pairs, degenerate, no consensus", "[homograp
                         static_cast<float>(scene::uniform(rng, 0, kH)),
                         static_cast<float>(scene::uniform(rng, 0, kW)),
                         static_cast<float>(scene::uniform(rng, 0, kH))});
-    cfg = RansacConfig{};
+    cfg = RansacParams{};
     cfg.min_inliers = 20;
     std::vector<uint8_t> jm(100, 9);
     r = estimate_homography(junk.data(), 100, cfg, jm.data());

@@ -88,7 +88,7 @@ std::vector<uint8_t> crop(const std::vector<uint8_t>& frame, int fw, int x0, int
 
 template <uint16_t MF>
 void features(const std::vector<uint8_t>& im, int w, int h, FeatureSet<4, MF>& out,
-              const HarrisConfig& c = HarrisConfig{}) {
+              const HarrisParams& c = HarrisParams{}) {
     static HarrisDetector<256, 96, 4, 2> det;
     static_assert(MF == 96, "one detector");
     REQUIRE(detect_features(det, im.data(), static_cast<uint16_t>(w), static_cast<uint16_t>(h),
@@ -213,7 +213,7 @@ TEST_CASE("Matching a textured frame to itself shifted recovers the shift exactl
         features(prev_im, w, h, prev);
         features(cur_im, w, h, cur);
         REQUIRE(prev.count >= 60);
-        MatchConfig c;
+        MatchParams c;
         if (std::abs(dx) > 24) {  // beyond the search radius: the offset brings it back
             c.offset_x = static_cast<int16_t>(dx);
             c.offset_y = static_cast<int16_t>(dy);
@@ -267,12 +267,12 @@ TEST_CASE("Matching refuses a repeated pattern by the margin check", "[ncc]") {
     REQUIRE(prev.count >= 20);
     FeatureMatch m[96];
     MatchStats st;
-    const uint16_t n = match_features(prev, cur, MatchConfig{}, m, 96, &st);
+    const uint16_t n = match_features(prev, cur, MatchParams{}, m, 96, &st);
     REQUIRE(st.ambiguous >= prev.count / 2);
     for (uint16_t k = 0; k < n; ++k)
         REQUIRE(cur.items[m[k].cur].px - prev.items[m[k].prev].px == 3);
     // Without the margin and mutual checks the first of the equal candidates wins: wrong pairs.
-    MatchConfig loose;
+    MatchParams loose;
     loose.min_margin_q15 = 0;
     loose.mutual = false;
     const uint16_t n_loose = match_features(prev, cur, loose, m, 96);
@@ -303,7 +303,7 @@ TEST_CASE("Matching: mutual check, flat patches, thresholds", "[ncc]") {
     cur.items[1] = patch_feature(85, 60, r);
     FeatureMatch m[8];
     MatchStats st;
-    MatchConfig c;
+    MatchParams c;
     c.min_score_q15 = 16384;
     REQUIRE(match_features(prev, cur, c, m, 8, &st) == 1);
     REQUIRE((m[0].prev == 0 && m[0].cur == 0 && m[0].score_q15 == 32767));

@@ -257,7 +257,7 @@ TEST_CASE("Kalman: long prediction saturates at the ceiling and flags it", "[kal
             }
         }
         INFO("first saturated frame " << first);
-        REQUIRE(f.flags() == kalman_covariance_saturated);
+        REQUIRE(f.flags() == KalmanFlags::covariance_saturated);
         REQUIRE(first > 800);
         REQUIRE(first < 900);
         REQUIRE(f.axis_x().pp == ceil);
@@ -288,7 +288,7 @@ TEST_CASE("Kalman: long prediction saturates at the ceiling and flags it", "[kal
             prev = ax;
             prev_y = f.y();
         }
-        REQUIRE(f.flags() == (kalman_covariance_saturated | kalman_state_saturated));
+        REQUIRE(f.flags() == (KalmanFlags::covariance_saturated | KalmanFlags::state_saturated));
         REQUIRE(f.axis_x().pp == ceil);
         REQUIRE(f.x().raw == INT32_MAX);
         REQUIRE(f.y().raw == INT32_MIN);
@@ -308,7 +308,7 @@ TEST_CASE("Kalman: long prediction saturates at the ceiling and flags it", "[kal
         PointKalman f;
         REQUIRE(f.init(q16_16::from_int(0), q16_16::from_int(0), p));
         for (int n = 0; n < 1000000; ++n) f.predict();
-        REQUIRE(f.flags() == kalman_covariance_saturated);  // velocity 0: the state stays put
+        REQUIRE(f.flags() == KalmanFlags::covariance_saturated);  // velocity 0: the state stays put
         for (const KalmanAxis* ax : {&f.axis_x(), &f.axis_y()}) {
             REQUIRE(ax->pp == ceil);
             REQUIRE(ax->pv == ceil);  // ⌊√2^60⌋² = 2^60

@@ -431,7 +431,7 @@ TEST_CASE("turn filter: a long spell of prediction saturates and says so", "[lin
         f.update(q16(10 + k), q16(0.5));
     }
     for (int k = 0; k < 20000; ++k) f.predict(q16(3), q16(1024));
-    CHECK((f.flags() & turn_covariance_saturated) != 0);
+    CHECK((f.flags() & TurnKalmanFlags::covariance_saturated) != 0);
     const int64_t* p = f.cov();
     for (int i : {0, 3, 5}) {
         CHECK(p[i] >= 0);

@@ -182,7 +182,7 @@ TEST_CASE("quad tracker: a side unseen too long loses the track; the next detect
     board(k, c);
     TrackedQuad t = h.step(sides(c, 0x1u));
     CHECK(t.state == TrackState::none);
-    CHECK(h.tracker.stats().lost_reason == lost_side_unseen);
+    CHECK(h.tracker.stats().lost_reason == QuadTrackLost::side_unseen);
     CHECK_FALSE(h.tracker.tracking());
     ++k;
     board(k, c);
@@ -206,7 +206,7 @@ TEST_CASE("quad tracker: a board that jumps past the gate is re-detected at once
         p.y += 30;
     }
     const TrackedQuad t = h.step(sides(c));
-    CHECK(h.tracker.stats().lost_reason == lost_detection_disagrees);
+    CHECK(h.tracker.stats().lost_reason == QuadTrackLost::detection_disagrees);
     CHECK(t.state == TrackState::started);
     CHECK(t.track_id == 2);
     CHECK(corner_error(t, c) < 0.01);

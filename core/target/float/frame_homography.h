@@ -16,9 +16,9 @@
 
 namespace qt {
 
-struct FrameHomographyConfig {
-    MatchConfig match;
-    RansacConfig ransac;
+struct FrameHomographyParams {
+    MatchParams match;
+    RansacParams ransac;
 };
 
 struct FrameHomography {
@@ -78,7 +78,7 @@ bool match_displacement_q8(const Feature<R>& a, const Feature<R>& b, int32_t& dx
 template <int R, uint16_t MaxFeatures>
 FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
                                    const FeatureSet<R, MaxFeatures>& b,
-                                   const FrameHomographyConfig& config,
+                                   const FrameHomographyParams& config,
                                    FrameHomographyScratch<R, MaxFeatures>& scratch) {
     FrameHomography out;
     const uint16_t found =

@@ -507,7 +507,7 @@ bool refit_homography(const PointPair* pairs, uint16_t n, const uint8_t* mask, H
     return refit_selected(pairs, n, sel, out);
 }
 
-RansacResult estimate_homography(const PointPair* pairs, uint16_t n, const RansacConfig& config,
+RansacResult estimate_homography(const PointPair* pairs, uint16_t n, const RansacParams& config,
                                  uint8_t* inlier_mask) {
     RansacResult res;
     if (inlier_mask)

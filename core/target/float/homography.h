@@ -56,7 +56,7 @@ bool nearly_collinear(float x0, float y0, float x1, float y1, float x2, float y2
 float reprojection_error_sq(const Homography& h, const PointPair& p);
 float transfer_error_sq(const Homography& h, const PointPair& p);
 
-struct RansacConfig {
+struct RansacParams {
     float inlier_px = 2.0f;          // an inlier's one-way transfer error |H a - b| <= this, px
     float confidence = 0.995f;       // stop when a better sample is this unlikely, 0 < c < 1
     uint16_t max_iterations = 1000;  // hypotheses tried at most (degenerate samples count)
@@ -92,7 +92,7 @@ struct RansacResult {
 // (at worst the best 4-point hypothesis) stays. Stack ~1.3 KB, no buffer of n: the inliers are
 // re-derived from H whenever needed.
 // inlier_mask (n bytes, may be null) gets 1 for an inlier, 0 otherwise (all 0 unless ok).
-RansacResult estimate_homography(const PointPair* pairs, uint16_t n, const RansacConfig& config,
+RansacResult estimate_homography(const PointPair* pairs, uint16_t n, const RansacParams& config,
                                  uint8_t* inlier_mask);
 
 // The adaptive bound of the RANSAC loop: N = ⌈log(1−c) / log(1−w⁴)⌉ for w = inliers / n,

@@ -12,6 +12,7 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/capacity.h"
 #include "base/status.h"
 #include "gradient/gradient_stage.h"
 #include "target/float/frame_homography.h"
@@ -21,9 +22,9 @@
 
 namespace qt {
 
-struct TargetPipelineConfig {
-    HarrisConfig harris;
-    FrameHomographyConfig geometry;
+struct TargetPipelineParams {
+    HarrisParams harris;
+    FrameHomographyParams geometry;
     TargetTrackerParams tracker;
     uint16_t capture_margin_px = 8;  // region kept beyond the expected search window, px
     // The template is cut again at the match when a measurement is accepted with an NCC
@@ -45,14 +46,20 @@ struct TargetFrame {
     TemplateHit hit;           // the best match there
 };
 
-template <uint16_t MaxWidth, uint16_t MaxFeatures = 96, int PatchRadius = 4,
-          uint8_t MaxTemplate = 16, uint16_t MaxRegion = 84>
+// Capacity: a base/capacity.h configuration (max_width, features, patch_radius, max_template,
+// max_region).
+template <class Capacity>
 class TargetPipeline {
+    static constexpr uint16_t MaxWidth = Capacity::max_width, MaxFeatures = Capacity::features;
+    static constexpr int PatchRadius = Capacity::patch_radius;
+    static constexpr uint8_t MaxTemplate = Capacity::max_template;
+    static constexpr uint16_t MaxRegion = Capacity::max_region;
+
 public:
     using Features = FeatureSet<PatchRadius, MaxFeatures>;
 
-    void configure(const TargetPipelineConfig& config) { config_ = config; }
-    const TargetPipelineConfig& config() const { return config_; }
+    // The parameters of the frame begun last.
+    const TargetPipelineParams& params() const { return params_; }
 
     // Starts (or restarts) tracking at the next frame: the template is that frame's w × h
     // pixels with top-left (x, y), px; the target's centre is the box's centre. bad_size when
@@ -71,12 +78,13 @@ public:
     // above capacity; previous_frame_incomplete when rows of the frame in progress were missing
     // (the new frame has started all the same). A refused or torn frame leaves no trace: the
     // next complete frame is matched to the last complete one and the track is as it was.
-    Status begin_frame(uint16_t width, uint16_t height) {
+    Status begin_frame(uint16_t width, uint16_t height, const TargetPipelineParams& params) {
         const bool abandoned = open_ && y_ < height_;
         open_ = false;
+        params_ = params;
         Status s = gradient_.begin_frame(width, height);
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
-        const Status h = harris_.begin_frame(width, height, config_.harris);
+        const Status h = harris_.begin_frame(width, height, params_.harris);
         if (h != Status::ok && h != Status::previous_frame_incomplete) return h;
         width_ = width;
         height_ = height;
@@ -86,11 +94,11 @@ public:
             capture_.begin(roi_x_, roi_y_, roi_w_, roi_h_, width, height);
         } else if (tracking_) {
             const SearchWindow e = tracker_.expected();
-            const int32_t half = static_cast<int32_t>(config_.tracker.max_radius_px >
-                                                              config_.tracker.template_radius_px
-                                                          ? config_.tracker.max_radius_px
-                                                          : config_.tracker.template_radius_px) +
-                                 config_.capture_margin_px + MaxTemplate / 2 + 1;
+            const int32_t half = static_cast<int32_t>(params_.tracker.max_radius_px >
+                                                              params_.tracker.template_radius_px
+                                                          ? params_.tracker.max_radius_px
+                                                          : params_.tracker.template_radius_px) +
+                                 params_.capture_margin_px + MaxTemplate / 2 + 1;
             capture_.begin(static_cast<int32_t>(e.x) - half, static_cast<int32_t>(e.y) - half,
                            2 * half + 1, 2 * half + 1, width, height);
         } else {
@@ -131,7 +139,7 @@ public:
         // Another size than the previous frame's: its corners cannot be matched; the track goes
         // on without a homography this frame.
         if (have_previous_ && prev_.width == width_ && prev_.height == height_) {
-            FrameHomographyConfig gc = config_.geometry;
+            FrameHomographyParams gc = params_.geometry;
             // Corners move with the camera: look for each where the last homography sends it.
             float ex, ey;
             const float cx = 0.5f * static_cast<float>(width_),
@@ -156,7 +164,7 @@ public:
             }
             tracker_.init(static_cast<float>(roi_x_) + 0.5f * static_cast<float>(roi_w_ - 1),
                           static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1),
-                          width_, height_, config_.tracker);
+                          width_, height_, params_.tracker);
             last_h_ = Homography{};
             // The box's centre is the template's: no offset.
             offset_x_q8_ = 0;
@@ -183,8 +191,8 @@ public:
             out.estimate = tracker_.update(m);
             const bool accepted = out.estimate.state == TargetState::measured ||
                                   out.estimate.state == TargetState::reacquired;
-            const bool every = config_.tracker.method == TargetMethod::template_only;
-            if (accepted && (every || out.hit.score_q15 < config_.refresh_score_q15))
+            const bool every = params_.tracker.method == TargetMethod::template_only;
+            if (accepted && (every || out.hit.score_q15 < params_.refresh_score_q15))
                 refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
         }
         out.tracking = tracking_;
@@ -226,7 +234,7 @@ private:
         have_previous_ = true;
     }
 
-    TargetPipelineConfig config_;
+    TargetPipelineParams params_;
     GradientStage<MaxWidth> gradient_;
     HarrisDetector<MaxWidth, MaxFeatures, PatchRadius> harris_;
     Features prev_;  // the previous frame's corners
@@ -247,8 +255,8 @@ private:
 
 // QVGA: 320-pixel rows, 96 corners, 9×9 patches, templates up to 16×16, a captured region of
 // up to 84×84 px (the default 24 px search radius + 8 px margin + half a template, each side).
-using TargetPipelineQvga = TargetPipeline<320>;
+using TargetPipelineQvga = TargetPipeline<Qvga>;
 // VGA for the CLI.
-using TargetPipelineVga = TargetPipeline<640, 160>;
+using TargetPipelineVga = TargetPipeline<Vga>;
 
 }  // namespace qt

@@ -1,0 +1,38 @@
+// The compile-time capacities of the pipeline for one camera size, as one named configuration:
+// each stage reads the fields it needs (LineDetector<Qvga>, BoardDetector<Qvga>,
+// TargetPipeline<Qvga>). A variant overrides fields by deriving:
+//   struct TwoSegments : qt::Qvga { static constexpr uint16_t segments = 2; };
+// When one fills, a stage keeps going and says so (Status::capacity_exceeded and its stats).
+#pragma once
+#include <stdint.h>
+
+namespace qt {
+
+struct Qvga {
+    // The largest frame, px.
+    static constexpr uint16_t max_width = 320, max_height = 240;
+    // Lines stage: edge points kept (the strongest, lines/edge_list.h); the Hough accumulator's
+    // angle bins over 180° and distance step, px (its bins follow from the frame); PPHT's
+    // segments and the clustered lines.
+    static constexpr uint16_t edge_points = 4096;
+    static constexpr uint16_t theta_bins = 90, rho_step = 2;
+    static constexpr uint16_t segments = 64, lines = 32;
+    // Quadrangles: parallel line pairs searched, quadrangles kept.
+    static constexpr uint16_t parallel_pairs = 128, quads = 4;
+    // Target tracker: Harris corners a frame, their patches' radius (9 × 9 at 4), the largest
+    // template side and the side of the region captured around the expected target, px.
+    static constexpr uint16_t features = 96;
+    static constexpr int patch_radius = 4;
+    static constexpr uint8_t max_template = 16;
+    static constexpr uint16_t max_region = 84;
+};
+
+struct Vga : Qvga {
+    static constexpr uint16_t max_width = 640, max_height = 480;
+    static constexpr uint16_t edge_points = 8192;
+    static constexpr uint16_t segments = 128, lines = 64;
+    static constexpr uint16_t parallel_pairs = 256;
+    static constexpr uint16_t features = 160;
+};
+
+}  // namespace qt
