@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Benchmarks whose figures the README quotes. Usage: bash bench.sh [NAME...]
+# The benchmarks. Each prints its figures and writes them into its docs/ page (between the
+# page's <!-- bench NAME --> markers, with the date, commit and machine): the figures in docs/
+# are only ever written this way. Usage: bash bench.sh [NAME...]
 #   gradient-host  core gradient throughput at 640x480, median of repeats, beside OpenCV's Sobel
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
 #   lines-host     lines stage accuracy table, vote window, VGA time vs OpenCV, RAM table
@@ -63,33 +65,37 @@ run_firmware() {
         -kernel "build/$preset/platform/firmware/$image.elf"
 }
 
-for name in "${names[@]}"; do
-    echo "=== $name"
-    case "$name" in
+# Runs one bench, printing its figures.
+run_bench() {
+    local b=build/host/platform/bench
+    case "$1" in
         gradient-host)
             host_build bench_gradient
-            ./build/host/platform/bench_gradient ;;
+            "$b/bench_gradient" ;;
         lines-host)
             host_build bench_lines
-            ./build/host/platform/bench_lines ;;
+            "$b/bench_lines" ;;
         quads-host)
             host_build bench_quads
-            ./build/host/platform/bench_quads ;;
+            "$b/bench_quads" ;;
         photos-host)
             ensure_packages opencv-doc netpbm python3-skimage
             host_build bench_photo_boards real_photos heldout_photos
             rm -rf bench_out/photos && mkdir -p bench_out/photos
-            ./build/host/platform/bench_photo_boards build/host/photos --scenes "${BENCH_PHOTO_SCENES:-500}" \
+            "$b/bench_photo_boards" build/host/photos --scenes "${BENCH_PHOTO_SCENES:-500}" \
                 --pictures bench_out/photos
-            echo "--- held out: photographs never used to choose a parameter (python3-skimage)"
-            ./build/host/platform/bench_photo_boards build/host/photos_heldout --scenes "${BENCH_PHOTO_SCENES:-500}" \
+            echo "Held out: photographs never used to choose a parameter (python3-skimage)."
+            "$b/bench_photo_boards" build/host/photos_heldout --scenes "${BENCH_PHOTO_SCENES:-500}" \
                 --no-sequence ;;
         track-host)
             host_build bench_track
-            ./build/host/platform/bench_track --out bench_out/track ;;
+            "$b/bench_track" --out bench_out/track ;;
         homography-host)
             host_build bench_homography
-            ./build/host/platform/bench_homography ;;
+            "$b/bench_homography" ;;
+        target-host)
+            host_build bench_target
+            "$b/bench_target" --out bench_out/target ;;
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench ;;
         budgets)
@@ -98,15 +104,12 @@ for name in "${names[@]}"; do
             run_firmware cortex-m3 mps2-an385 chain_bench 2>&1 | grep -E '^(budget|work|chain:|FAIL)' ;;
         track-m4)
             run_firmware cortex-m4 mps2-an386 track_bench ;;
-        target-host)
-            host_build bench_target
-            ./build/host/platform/bench_target --out bench_out/target ;;
         soak)
             ensure_packages cmake make g++ catch2
             cmake --preset host-sanitize >/dev/null
             cmake --build --preset host-sanitize -j"$jobs" --target bench_soak >/dev/null
             # shellcheck disable=SC2086  # the flags are words
-            ./build/host-sanitize/platform/bench_soak ${BENCH_SOAK_FLAGS:-} ;;
+            ./build/host-sanitize/platform/bench/bench_soak ${BENCH_SOAK_FLAGS:-} ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;
@@ -129,7 +132,29 @@ for name in "${names[@]}"; do
             ensure_packages yosys nextpnr-ice40 fpga-icestorm
             bash hdl/synth/ice40.sh ;;
         *)
-            echo "unknown benchmark '$name'" >&2
-            exit 2 ;;
+            echo "unknown benchmark '$1'" >&2
+            return 2 ;;
     esac
+}
+
+# The docs page whose figures each bench writes (between its <!-- bench NAME --> markers).
+doc_of() {
+    case "$1" in
+        gradient-host|gradient-m4|hdl-latency|hdl-soak|fpga) echo docs/gradient.md ;;
+        lines-host) echo docs/lines.md ;;
+        quads-host|photos-host) echo docs/quadrangles.md ;;
+        track-host|track-m4) echo docs/tracking.md ;;
+        homography-host|target-host) echo docs/target.md ;;
+        budgets|budgets-m3) echo docs/firmware.md ;;
+        soak|fuzz) echo docs/robustness.md ;;
+    esac
+}
+
+for name in "${names[@]}"; do
+    echo "=== $name"
+    out=$(mktemp)
+    run_bench "$name" | tee "$out"
+    doc=$(doc_of "$name")
+    [ -z "$doc" ] || python3 platform/bench/record_figures.py "$doc" "$name" "$out"
+    rm -f "$out"
 done

@@ -7,4 +7,4 @@ source platform/ensure_packages.sh
 ensure_packages cmake make g++ catch2
 cmake --preset host >/dev/null
 cmake --build --preset host --target quadtrack -j"$(nproc)" >/dev/null
-./build/host/platform/quadtrack demo --out demo_out
+./build/host/platform/cli/quadtrack demo --out demo_out
