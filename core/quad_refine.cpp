@@ -202,7 +202,7 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4], const 
         quad.corners[i] = c[k];
         quad.lines[i] = old_lines[k];
         sides[i] = fitted[k];
-        mask = static_cast<uint8_t>(mask | (((refitted >> k) & 1u) << i));
+        mask = static_cast<uint8_t>(mask | (((static_cast<uint32_t>(refitted) >> k) & 1u) << i));
         if (evidence) {
             evidence->held[i] = found.held[k];
             evidence->steps[i] = found.steps[k];
@@ -218,7 +218,7 @@ bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParam
     for (int i = 0; i < 4; ++i) {
         held += e.held[i];
         steps += e.steps[i];
-        const bool hidden = (completed >> i) & 1u;
+        const bool hidden = ((static_cast<uint32_t>(completed) >> i) & 1u) != 0;
         const uint32_t least = hidden ? params.min_hidden_side_evidence_percent : params.min_side_evidence_percent;
         sides_ok = sides_ok && e.steps[i] > 0 && e.ends[i] == 3u && e.held[i] * 100u >= e.steps[i] * least;
     }
