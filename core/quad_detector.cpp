@@ -114,7 +114,7 @@ Segment line_through(Point16 p, Point16 q) {
     FittedLine l;
     l.mx = q16_16::from_raw(static_cast<int32_t>((static_cast<int64_t>(p.x.raw) + q.x.raw) / 2));
     l.my = q16_16::from_raw(static_cast<int32_t>((static_cast<int64_t>(p.y.raw) + q.y.raw) / 2));
-    int64_t dx = (ux << 30) / len, dy = (uy << 30) / len;
+    int64_t dx = (ux * (int64_t{1} << 30)) / len, dy = (uy * (int64_t{1} << 30)) / len;
     if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
     l.dx = q2_30::from_raw(static_cast<int32_t>(dx));
     l.dy = q2_30::from_raw(static_cast<int32_t>(dy));

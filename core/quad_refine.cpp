@@ -74,8 +74,8 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
     // Slopes in q16.16, one division each (a 64-bit division is a library call on Cortex-M):
     // minor per major (|.| <= 1) and major per minor (0 when the line runs along a row or
     // column within 2^-14, where every column of the stretch is searched).
-    const int64_t slope = (u_minor << 16) / u_major;
-    const int64_t inverse = (u_minor < 0 ? -u_minor : u_minor) >= (int64_t{1} << 16) ? (u_major << 16) / u_minor : 0;
+    const int64_t slope = (u_minor * 65536) / u_major;
+    const int64_t inverse = (u_minor < 0 ? -u_minor : u_minor) >= (int64_t{1} << 16) ? (u_major * 65536) / u_minor : 0;
     auto minor_at = [&](int32_t major) {  // the line's minor coordinate at a major one, whole pixels
         return static_cast<int32_t>((o_minor + ((static_cast<int64_t>(major * 32 - o_major) * slope) >> 16) + 16) >> 5);
     };
@@ -137,8 +137,8 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     const int64_t len = distance(a, b).raw;  // q16_16
     const int32_t margin32 = to32(p.end_margin), len32 = static_cast<int32_t>(shr_round_half_away(len, 11));
     if (len <= 0 || len32 <= 2 * margin32 + 64) return false;
-    Walk w{to32(a.x), to32(a.y), static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) << 30) / len),
-           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) << 30) / len), margin32, len32 - margin32};
+    Walk w{to32(a.x), to32(a.y), static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) * (int64_t{1} << 30)) / len),
+           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) * (int64_t{1} << 30)) / len), margin32, len32 - margin32};
     const Polarity pol = polarity_of(line);
     FittedLine fit{};
     const int32_t bands[2] = {to32(p.band), to32(p.fine_band)};
