@@ -161,7 +161,7 @@ TEST_CASE("cluster output capacity is reported", "[cluster]") {
     REQUIRE(orientation_difference(angle_from_deg(10), angle_from_deg(190)) == 0u);
 }
 
-TEST_CASE("line ends near a corner move to the intersection; others stay", "[cluster]") {
+TEST_CASE("line ends near a corner move to the intersection, others stay", "[cluster]") {
     // The sides y = 50 (x from 12 to 100) and x = 10 (y from 52 to 120) of a corner at (10, 50):
     // both ends 2 px short of it. A third line, parallel to the first, stays as it is.
     Segment lines[3] = {seg(12, 50, 100, 50, 80), seg(10, 52, 10, 120, 60),

@@ -97,7 +97,7 @@ TEST_CASE("edges below the threshold are not reported", "[edges]") {
     REQUIRE(run(f, 19).size() == 5);
 }
 
-TEST_CASE("edge list lookups agree with a brute-force search; capacity overflow is counted",
+TEST_CASE("edge list lookups agree with a brute-force search, and capacity overflow is counted",
           "[edges]") {
     EdgeListStorage<300, 40> storage;
     EdgeList list = storage.view();

@@ -273,7 +273,7 @@ TEST_CASE("homography_from_4 refuses collinear samples in either image", "[homog
     CHECK(untouched.m[2] == 42.0f);
 }
 
-TEST_CASE("apply, multiply and invert agree with double math; H⁻¹·H = I", "[homography]") {
+TEST_CASE("apply, multiply and invert agree with double math, and H⁻¹·H = I", "[homography]") {
     Pcg32 rng(7);
     for (int t = 0; t < 200; ++t) {
         H64 a = random_motion(rng), b = random_motion(rng);

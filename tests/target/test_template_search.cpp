@@ -229,7 +229,7 @@ TEST_CASE("search_template sub-pixel: a smooth texture shifted by 0.25 and 0.5 p
                                                    << " px against the double reference");
 }
 
-TEST_CASE("cut_template refuses boxes outside the region or too large; copies the pixels",
+TEST_CASE("cut_template refuses boxes outside the region or too large, and copies the pixels",
           "[template]") {
     Pcg32 rng(9);
     std::vector<uint8_t> img(64 * 48);
