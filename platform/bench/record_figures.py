@@ -26,7 +26,9 @@ def machine():
 def commit():
     try:
         out = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
-        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
+        # docs/ is left out: an earlier bench of the same run has just written its figures there.
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--",
+                                ".", ":(exclude)docs"],
                                capture_output=True, text=True).stdout.strip()
         return out.stdout.strip() + (" with uncommitted changes" if dirty else "")
     except OSError:
