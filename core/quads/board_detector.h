@@ -89,6 +89,12 @@ public:
                 ++quad_stats_.rejected_evidence;
                 continue;
             }
+            // Refitted sides can move a corner a pixel or two: rule 3 holds for what is kept.
+            if (!rule_corners_inside(quad.corners, lines_.width(), lines_.height(),
+                                     params_.quads)) {
+                ++quad_stats_.rejected_inside;
+                continue;
+            }
             // Two candidates that refit to one quadrangle (corners within collinear_distance)
             // are one: the better scored stays.
             uint16_t dup = 0;

@@ -204,7 +204,7 @@ TEST_CASE("track: frames without a board report no quad", "[cli][track]") {
     }
 }
 
-TEST_CASE("track --help lists the tracker's options, and detect does not take them", "[cli][track]") {
+TEST_CASE("track --help lists the tracker's options, detect does not take them", "[cli][track]") {
     const Run help = track({"--help"});
     CHECK(help.status == 0);
     for (const char* name : {"--model paper|turn", "--filters", "--gate-angle", "--gate-distance",

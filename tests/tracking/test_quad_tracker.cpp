@@ -165,7 +165,7 @@ TEST_CASE("quad tracker: distractors and wrong polarity are not taken", "[quad_t
     CHECK(corner_error(t, c) < 0.5);
 }
 
-TEST_CASE("quad tracker: a side unseen too long loses the track, and the next detection restarts it",
+TEST_CASE("quad tracker: a side unseen too long loses the track, the next detection restarts it",
           "[quad_tracker]") {
     Harness h;
     const QuadTrackerParams params = default_quad_tracker_params(kW, kH);
