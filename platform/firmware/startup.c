@@ -1,6 +1,7 @@
 /* Vector table and reset for the Cortex-M4 on QEMU mps2-an386 (memory map: mps2_an386.ld).
- * Reset: turn the FPU on (hard-float builds), paint the stack, copy .data, zero .bss, run static constructors, call main, and
- * exit through semihosting with main's return value as QEMU's exit status. */
+ * Reset: turn the FPU on (hard-float builds), paint the stack, copy .data, zero .bss, run
+ * static constructors, call main, and exit through semihosting with main's return value as
+ * QEMU's exit status. */
 #include <stdint.h>
 
 #include "semihosting.h"

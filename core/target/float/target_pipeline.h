@@ -260,7 +260,7 @@ private:
     }
 
     TargetPipelineParams params_;
-    GradientStage<MaxWidth> gradient_;
+    GradientStage<MaxWidth, XyWordRowKernel> gradient_;  // gx, gy only: all Harris reads
     HarrisDetector<MaxWidth, MaxFeatures, PatchRadius> harris_;
     Features prev_;  // the previous frame's corners
     FrameHomographyScratch<PatchRadius, MaxFeatures> scratch_;
