@@ -8,6 +8,12 @@
 #   budgets        the whole QVGA chain on Cortex-M4 (QEMU -icount): instructions per frame and
 #                  stage on the board sequence and the cluttered frame, flash, RAM, stack
 #   budgets-m3     the same on Cortex-M3 (mps2-an385)
+#   budgets-m4f    the same on Cortex-M4F (hard float; the chain has no float, so ~ Cortex-M4)
+#   target-m4f     the target pipeline (Harris, NCC, homography, template search, filter) on
+#                  Cortex-M4F (hard float, QEMU -icount): instructions per QVGA frame and stage,
+#                  median and worst, flash, RAM, stack
+#   budget-table   one table of the above for Cortex-M4, M4F and M3: per stage and kind of frame
+#                  (board, clutter, real photograph), median and worst; flash and RAM per image
 #   track-m4       instructions per line per frame of the line tracker (1KF, 2KF, 3KF, turn) on
 #                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
@@ -41,7 +47,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host homography-host target-host soak gradient-m4 budgets budgets-m3 track-m4 hdl-latency hdl-soak fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host homography-host target-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table track-m4 hdl-latency hdl-soak fpga fuzz)
 
 # The host benches compare with OpenCV in the same run: its development packages are installed
 # here (never by the test command; the runtime never links it), and the configure step fails
@@ -52,17 +58,34 @@ host_build() {
     cmake --build --preset host -j"$jobs" --target "$@" >/dev/null
 }
 
-# Builds a Cortex-M preset (cortex-m4 or cortex-m3) and runs one firmware image under QEMU with
-# -icount shift=0 (one SysTick tick per 40 instructions, deterministic).
+# Builds a Cortex-M preset (cortex-m4, cortex-m4f or cortex-m3) and runs one firmware image under
+# QEMU with -icount shift=0 (one SysTick tick per 40 instructions, deterministic). The QEMU CPU is
+# the preset's without the f: QEMU's cortex-m4 has the FPU either way.
 run_firmware() {
     local preset=$1 machine=$2 image=$3
     ensure_packages cmake make g++ gcc-arm-none-eabi libnewlib-arm-none-eabi \
         libstdc++-arm-none-eabi-newlib qemu-system-arm opencv-doc netpbm
     cmake --preset "$preset" >/dev/null
     cmake --build --preset "$preset" -j"$jobs" >/dev/null
-    qemu-system-arm -M "$machine" -cpu "$preset" -nographic \
+    qemu-system-arm -M "$machine" -cpu "${preset%f}" -nographic \
         -semihosting-config enable=on,target=native -icount shift=0 \
         -kernel "build/$preset/platform/firmware/$image.elf"
+}
+
+# budget-table: chain_bench on the three parts and target_bench on the M4F, then one table.
+budget_table() {
+    local out=bench_out/budgets
+    mkdir -p "$out"
+    run_firmware cortex-m4 mps2-an386 chain_bench >"$out/m4.txt" 2>&1
+    run_firmware cortex-m4f mps2-an386 chain_bench >"$out/m4f.txt" 2>&1
+    run_firmware cortex-m3 mps2-an385 chain_bench >"$out/m3.txt" 2>&1
+    run_firmware cortex-m4f mps2-an386 target_bench >"$out/m4f-target.txt" 2>&1
+    python3 platform/bench/budget_table.py \
+        --chain Cortex-M4="$out/m4.txt" --chain Cortex-M4F="$out/m4f.txt" \
+        --chain Cortex-M3="$out/m3.txt" --target Cortex-M4F="$out/m4f-target.txt" \
+        --elves Cortex-M4=build/cortex-m4/platform/firmware \
+        --elves Cortex-M4F=build/cortex-m4f/platform/firmware \
+        --elves Cortex-M3=build/cortex-m3/platform/firmware
 }
 
 # Runs one bench, printing its figures.
@@ -102,6 +125,12 @@ run_bench() {
             run_firmware cortex-m4 mps2-an386 chain_bench 2>&1 | grep -E '^(budget|work|chain:|FAIL)' ;;
         budgets-m3)
             run_firmware cortex-m3 mps2-an385 chain_bench 2>&1 | grep -E '^(budget|work|chain:|FAIL)' ;;
+        budgets-m4f)
+            run_firmware cortex-m4f mps2-an386 chain_bench 2>&1 | grep -E '^(budget|work|chain:|FAIL)' ;;
+        target-m4f)
+            run_firmware cortex-m4f mps2-an386 target_bench 2>&1 | grep -E '^(budget|target:|FAIL)' ;;
+        budget-table)
+            budget_table ;;
         track-m4)
             run_firmware cortex-m4 mps2-an386 track_bench ;;
         soak)
@@ -145,7 +174,7 @@ doc_of() {
         quads-host|photos-host) echo docs/quadrangles.md ;;
         track-host|track-m4) echo docs/tracking.md ;;
         homography-host|target-host) echo docs/target.md ;;
-        budgets|budgets-m3) echo docs/firmware.md ;;
+        budgets|budgets-m3|budgets-m4f|target-m4f|budget-table) echo docs/firmware.md ;;
         soak|fuzz) echo docs/robustness.md ;;
     esac
 }

@@ -7,8 +7,9 @@
 // a frame of H rows makes exactly H sink calls.
 //
 // What a row becomes is the RowKernel's business: WordRowKernel (the default) makes gradient
-// words, the FPGA block's output; edge_stage.h's NmsRowKernel makes the edge stage's packed
-// rows directly, for the software path of the lines stage.
+// words, the FPGA block's output; XyWordRowKernel makes words with gx and gy only, for the
+// Harris detector; edge_stage.h's NmsRowKernel makes the edge stage's packed rows directly,
+// for the software path of the lines stage.
 #pragma once
 #include <stdint.h>
 #include <string.h>
@@ -29,6 +30,22 @@ struct WordRowKernel {
     void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
                     uint16_t width, gradient_word* out) const {
         gradient_row(above, center, below, width, out);
+    }
+};
+
+// The same with gx and gy only (make_gradient_word_xy: magnitude and direction 0).
+void gradient_row_xy(const uint8_t* above, const uint8_t* center, const uint8_t* below,
+                     uint16_t width, gradient_word* out);
+
+// Rows of gx/gy-only words, out[0 .. width): the target pipeline's own gradient pass, whose
+// Harris detector reads nothing else (on a Cortex-M4 the direction bin is most of a word's
+// cost).
+struct XyWordRowKernel {
+    using value_type = gradient_word;
+    static constexpr uint16_t kPad = 0;
+    void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
+                    uint16_t width, gradient_word* out) const {
+        gradient_row_xy(above, center, below, width, out);
     }
 };
 

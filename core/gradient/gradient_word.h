@@ -61,6 +61,13 @@ constexpr gradient_word make_gradient_word(int32_t gx, int32_t gy) {
            (mag << gw::kMagLsb) | (direction_bin(gx, gy) << gw::kDirLsb);
 }
 
+// gx and gy (each -255..255) alone, magnitude and direction bin 0: for a consumer that reads
+// nothing else (the Harris detector), without the direction's work.
+constexpr gradient_word make_gradient_word_xy(int32_t gx, int32_t gy) {
+    return ((static_cast<uint32_t>(gx) & gw::field_mask(gw::kGxBits)) << gw::kGxLsb) |
+           ((static_cast<uint32_t>(gy) & gw::field_mask(gw::kGyBits)) << gw::kGyLsb);
+}
+
 // Field accessors. Sign extension by xor-and-subtract: no shift of a negative value.
 constexpr int32_t gradient_gx(gradient_word w) {
     return static_cast<int32_t>(((w >> gw::kGxLsb) & 0x1FFu) ^ 0x100u) - 0x100;

@@ -138,9 +138,12 @@ public:
         if (length != width_) return abandon(Status::bad_row_length);
         if (y != gradient_rows_ || y >= pixel_rows_) return abandon(Status::bad_row_order);
         gradient_word* slot = grads_[y % kWindowRows];
-        if (y >= kWindowRows) add_row(slot, -1);  // row y − (2V+1) leaves the window
+        // Row y enters the window; row y − (2V+1), in the slot it takes, leaves it.
+        if (y >= kWindowRows)
+            slide_row(slot, words);
+        else
+            add_row(words);
         memcpy(slot, words, row_width() * sizeof(gradient_word));
-        add_row(slot, +1);
         gradient_rows_ = static_cast<uint16_t>(y + 1u);
         if (y + 1 >= kWindowRows && width_ >= kWindowRows) {
             const int yc = y - WindowRadius;  // the row whose windows are now complete
@@ -231,14 +234,26 @@ private:
         return s;
     }
 
-    // Adds (sign +1) or removes (−1) a gradient row's products to the column sums. Each column
-    // sum holds at most 2V+1 products of <= 65025: below kS < 2^31.
-    void add_row(const gradient_word* row, int32_t sign) {
+    // Adds a gradient row's products to the column sums. Each column sum holds at most 2V+1
+    // products of <= 65025: below kS < 2^31.
+    void add_row(const gradient_word* row) {
         for (uint16_t x = 0; x < width_; ++x) {
             const int32_t gx = gradient_gx(row[x]), gy = gradient_gy(row[x]);
-            col_xx_[x] += sign * gx * gx;
-            col_xy_[x] += sign * gx * gy;
-            col_yy_[x] += sign * gy * gy;
+            col_xx_[x] += gx * gx;
+            col_xy_[x] += gx * gy;
+            col_yy_[x] += gy * gy;
+        }
+    }
+    // Adds row `in`'s products and removes row `out`'s in one pass (one loop instead of two;
+    // the sums are exact integers, so the result is the same). The difference of two products
+    // lies in ±65025 and the column sums before and after are those of 2V+1 rows: no overflow.
+    void slide_row(const gradient_word* out, const gradient_word* in) {
+        for (uint16_t x = 0; x < width_; ++x) {
+            const int32_t ox = gradient_gx(out[x]), oy = gradient_gy(out[x]);
+            const int32_t ix = gradient_gx(in[x]), iy = gradient_gy(in[x]);
+            col_xx_[x] += ix * ix - ox * ox;
+            col_xy_[x] += ix * iy - ox * oy;
+            col_yy_[x] += iy * iy - oy * oy;
         }
     }
 

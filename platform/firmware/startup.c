@@ -1,6 +1,7 @@
 /* Vector table and reset for the Cortex-M4 on QEMU mps2-an386 (memory map: mps2_an386.ld).
- * Reset: paint the stack, copy .data, zero .bss, run static constructors, call main, and
- * exit through semihosting with main's return value as QEMU's exit status. */
+ * Reset: turn the FPU on (hard-float builds), paint the stack, copy .data, zero .bss, run
+ * static constructors, call main, and exit through semihosting with main's return value as
+ * QEMU's exit status. */
 #include <stdint.h>
 
 #include "semihosting.h"
@@ -25,6 +26,14 @@ enum {
  * memset/memcpy calls: the stack loop must not call anything that pushes onto the very
  * words it is painting. */
 void Reset_Handler(void) {
+#if defined(__ARM_FP)
+    /* The FPU is off at reset (CPACR = 0: any FP instruction faults). Full access for
+     * coprocessors 10 and 11, the FPU (ARMv7-M ARM B3.2.20), before any code that may use FP
+     * registers; the barriers make the access take effect for the next instruction. */
+    volatile uint32_t* const cpacr = (volatile uint32_t*)0xE000ED88u;
+    *cpacr |= (3u << 20) | (3u << 22);
+    __asm__ volatile("dsb\n isb" ::: "memory");
+#endif
     uint32_t* sp;
     __asm__ volatile("mov %0, sp" : "=r"(sp));
     for (volatile uint32_t* p = __stack_limit; p < sp; ++p) *p = QT_STACK_PAINT;

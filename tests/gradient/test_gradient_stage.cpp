@@ -15,9 +15,8 @@ struct Collected {
     std::vector<int> row_order;
 };
 
-template <uint16_t MaxW>
-Status run_frame(GradientStage<MaxW>& stage, const std::vector<uint8_t>& px, int w, int h,
-                 Collected& c) {
+template <class Stage>
+Status run_frame(Stage& stage, const std::vector<uint8_t>& px, int w, int h, Collected& c) {
     auto sink = [&](uint16_t y, const gradient_word* words, uint16_t width) {
         c.row_order.push_back(y);
         REQUIRE(width == w);
@@ -68,6 +67,28 @@ TEST_CASE("gradient stage equals the whole-frame reference at many sizes", "[gra
         Collected c;
         REQUIRE(run_frame(stage, px, w, h, c) == Status::ok);
         require_equal_to_reference(px, w, h, c);
+    }
+}
+
+TEST_CASE("gx/gy-only words equal the reference's gx and gy, magnitude and direction 0",
+          "[gradient]") {
+    static GradientStage<640, XyWordRowKernel> stage;
+    Pcg32 rng(9);
+    const int sizes[][2] = {{1, 1}, {1, 9}, {9, 1}, {2, 2}, {3, 3}, {37, 23}, {640, 4}, {320, 7}};
+    for (const auto& wh : sizes) {
+        const int w = wh[0], h = wh[1];
+        const auto px = noise(w, h, rng);
+        Collected c;
+        REQUIRE(run_frame(stage, px, w, h, c) == Status::ok);
+        const auto ref = ref::frame_gradients(px, w, h);
+        REQUIRE(c.words.size() == ref.size());
+        for (size_t i = 0; i < ref.size(); ++i) {
+            INFO("frame " << w << "x" << h << " pixel " << i);
+            REQUIRE(gradient_gx(c.words[i]) == ref[i].gx);
+            REQUIRE(gradient_gy(c.words[i]) == ref[i].gy);
+            REQUIRE(gradient_mag(c.words[i]) == 0u);
+            REQUIRE(gradient_dir(c.words[i]) == 0u);
+        }
     }
 }
 

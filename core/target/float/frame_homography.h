@@ -75,11 +75,14 @@ bool match_displacement_q8(const Feature<R>& a, const Feature<R>& b, int32_t& dx
     return true;
 }
 
-template <int R, uint16_t MaxFeatures>
+// matched() is called once, between the matching (NCC and displacements) and RANSAC, for a
+// caller that times the two (the firmware's budgets).
+template <int R, uint16_t MaxFeatures, class Matched>
 FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
                                    const FeatureSet<R, MaxFeatures>& b,
                                    const FrameHomographyParams& config,
-                                   FrameHomographyScratch<R, MaxFeatures>& scratch) {
+                                   FrameHomographyScratch<R, MaxFeatures>& scratch,
+                                   Matched&& matched) {
     FrameHomography out;
     const uint16_t found =
         match_features(a, b, config.match, scratch.matches, MaxFeatures, &out.match_stats);
@@ -95,8 +98,17 @@ FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
         scratch.pairs[out.matches++] = PointPair{ax, ay, ax + static_cast<float>(dx_q8) * kQ8,
                                                  ay + static_cast<float>(dy_q8) * kQ8};
     }
+    matched();
     out.ransac = estimate_homography(scratch.pairs, out.matches, config.ransac, scratch.inlier);
     return out;
+}
+
+template <int R, uint16_t MaxFeatures>
+FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
+                                   const FeatureSet<R, MaxFeatures>& b,
+                                   const FrameHomographyParams& config,
+                                   FrameHomographyScratch<R, MaxFeatures>& scratch) {
+    return homography_between(a, b, config, scratch, [] {});
 }
 
 }  // namespace qt

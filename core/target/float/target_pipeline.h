@@ -46,6 +46,19 @@ struct TargetFrame {
     TemplateHit hit;           // the best match there
 };
 
+// The steps of TargetPipeline::finish(), in the order it ends them, for a caller that times them
+// (the firmware's budgets). match and homography end only when there is a previous frame of the
+// same size; predict, search, update and refresh only while tracking (not on the start frame).
+enum class TargetStage : uint8_t {
+    harris,      // corner selection (the per-row Harris response is done by push_row)
+    match,       // NCC matches to the previous frame's corners, sub-pixel displacements
+    homography,  // RANSAC and the refit
+    predict,     // the filter's prediction and search window
+    search,      // the template search (NCC) in the window
+    update,      // the filter's update with the match
+    refresh,     // the template cut again at the match, when it is
+};
+
 // Capacity: a base/capacity.h configuration (max_width, features, patch_radius, max_template,
 // max_region).
 template <class Capacity>
@@ -129,10 +142,16 @@ public:
 
     // After the last row: corners, homography, tracking.
     Status finish(TargetFrame& out) {
+        return finish(out, [](TargetStage) {});
+    }
+    // The same, calling mark(stage) as each step of TargetStage ends.
+    template <class Mark>
+    Status finish(TargetFrame& out, Mark&& mark) {
         out = TargetFrame{};
         if (!open_ || y_ != height_ || width_ == 0) return Status::not_in_frame;
         const Status hs = harris_.finish();
         if (hs != Status::ok && hs != Status::capacity_exceeded) return hs;
+        mark(TargetStage::harris);
         const Features& cur = harris_.features();
         out.features = cur.count;
         FrameGeometry g;
@@ -148,7 +167,9 @@ public:
                 gc.match.offset_x = clamp16(ex - cx);
                 gc.match.offset_y = clamp16(ey - cy);
             }
-            out.geometry = homography_between(prev_, cur, gc, scratch_);
+            out.geometry =
+                homography_between(prev_, cur, gc, scratch_, [&] { mark(TargetStage::match); });
+            mark(TargetStage::homography);
             g.valid = out.geometry.ransac.status == HomographyStatus::ok;
             g.h = out.geometry.ransac.h;
             g.reprojection_px = out.geometry.ransac.reprojection_px;
@@ -176,6 +197,7 @@ public:
             out.estimate.y = static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1);
         } else if (tracking_) {
             out.window = tracker_.predict(g);
+            mark(TargetStage::predict);
             TargetMeasurement m;
             if (out.window.radius > 0) {
                 const float rad = out.window.radius;
@@ -188,12 +210,15 @@ public:
                     m.score = static_cast<float>(out.hit.score_q15) * (1.0f / 32768.0f);
                 }
             }
+            mark(TargetStage::search);
             out.estimate = tracker_.update(m);
+            mark(TargetStage::update);
             const bool accepted = out.estimate.state == TargetState::measured ||
                                   out.estimate.state == TargetState::reacquired;
             const bool every = params_.tracker.method == TargetMethod::template_only;
             if (accepted && (every || out.hit.score_q15 < params_.refresh_score_q15))
                 refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
+            mark(TargetStage::refresh);
         }
         out.tracking = tracking_;
         keep_features(cur);
@@ -235,7 +260,7 @@ private:
     }
 
     TargetPipelineParams params_;
-    GradientStage<MaxWidth> gradient_;
+    GradientStage<MaxWidth, XyWordRowKernel> gradient_;  // gx, gy only: all Harris reads
     HarrisDetector<MaxWidth, MaxFeatures, PatchRadius> harris_;
     Features prev_;  // the previous frame's corners
     FrameHomographyScratch<PatchRadius, MaxFeatures> scratch_;
