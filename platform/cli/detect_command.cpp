@@ -14,7 +14,7 @@ std::string detect_usage() {
            "plane),\n"
            "  at most " +
            std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
-           " pixels. Prints one JSON object on stdout (see README, \"quadtrack detect\").\n"
+           " pixels. Prints one JSON object on stdout (see docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
            options_help();
 }

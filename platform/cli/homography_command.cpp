@@ -12,8 +12,8 @@ std::string homography_usage() {
     return "usage: quadtrack homography A B [OPTIONS]\n"
            "  A and B are PGM/PPM/Y4M frames of at most 640 x 480 pixels (the first frame of a "
            "Y4M).\n"
-           "  Prints {\"H\",\"inliers\",\"matches\",...}: H maps A's pixels into B (see README,\n"
-           "  \"quadtrack homography\").\n"
+           "  Prints {\"H\",\"inliers\",\"matches\",...}: H maps A's pixels into B (see\n"
+           "  docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
            target_options_help(GeometryCommand::homography);
 }

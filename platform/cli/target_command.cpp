@@ -15,7 +15,7 @@ std::string target_usage() {
            "the\n"
            "  box X,Y,W,H of frame 0; one JSON line per frame "
            "{\"frame\",\"x\",\"y\",\"state\",...}\n"
-           "  (see README, \"quadtrack target\"); x, y may lie outside the image while the target\n"
+           "  (see docs/cli.md); x, y may lie outside the image while the target\n"
            "  is out of view.\n"
            "options (--name VALUE or --name=VALUE):\n" +
            target_options_help(GeometryCommand::target);
