@@ -4,7 +4,8 @@
 # are only ever written this way. Usage: bash bench.sh [NAME...]
 #   gradient-host  core gradient throughput at 640x480, median of repeats, beside OpenCV's Sobel
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
-#   lines-host     lines stage accuracy table, vote window, VGA time vs OpenCV, RAM table
+#   lines-host     lines stage accuracy table (default and the paper's Canny front end), vote
+#                  window, VGA time vs OpenCV, RAM table
 #   budgets        the whole QVGA chain on Cortex-M4 (QEMU -icount): instructions per frame and
 #                  stage on the board sequence and the cluttered frame, flash, RAM, stack
 #   budgets-m3     the same on Cortex-M3 (mps2-an385)
@@ -26,10 +27,13 @@
 #                  corner error, inliers, iterations, time, beside OpenCV's findHomography
 #                  (RANSAC, RHO)
 #   track-host     line tracker on the paper's synthetic translations and rotations: overlap
-#                  tables for 1KF, 2KF, 3KF and the turn model, SVG charts in bench_out/track
+#                  tables for 1KF, 2KF, 3KF and the turn model, Experiment 1 with varying
+#                  lengths and noise, SVG charts in bench_out/track
 #   target-host    the filtering-geometry paper's comparison on generated airborne sequences:
 #                  template only, filter only, homography only, fused (with and without Table
-#                  III's reset); error tables and SVG charts in bench_out/target
+#                  III's reset), the paper's version of each of the project's choices (D_rep,
+#                  search region, morphological detection, formulation); error tables and SVG
+#                  charts in bench_out/target, Fig. 12 (with and without the reset) among them
 #   soak           the quadrangle tracker (10^6 generated frames, 30 % of sides missed, bursts of
 #                  total loss) and the target tracker (10^5 frames of spells out of view) on seeds
 #                  1-3, built with ASan + UBSan (host-sanitize): recovery, covariance, lost events;

@@ -57,7 +57,7 @@ extern "C" {
  * this ABI across small changes inside the C++ objects; a larger one stops the build at those
  * static_asserts, and then these constants (and every C object file using them) change
  * together. */
-#define QT_DETECTOR_BYTES 50176u /* 49 KiB */
+#define QT_DETECTOR_BYTES 51200u /* 50 KiB */
 #define QT_TRACKER_BYTES 2176u   /* 2 KiB + 128 B */
 
 /* Opaque, caller-owned objects: suitably aligned bytes. Touch only through the functions. */

@@ -71,6 +71,49 @@ void EdgeList::drop_weakest() {
     count_ = static_cast<uint16_t>(write);
 }
 
+uint32_t EdgeList::hysteresis(uint16_t high, uint8_t* scratch, uint32_t scratch_bytes) {
+    if (scratch_bytes / 2u < count_) return 0;
+    // Marked points (state 3, unused before PPHT) go on the stack once each, as two bytes.
+    constexpr uint32_t kKept = 3;
+    uint32_t top = 0;
+    auto push = [&](uint32_t i) {
+        points_[i] = ep::with_state(points_[i], kKept);
+        scratch[2 * top] = static_cast<uint8_t>(i & 0xFFu);
+        scratch[2 * top + 1] = static_cast<uint8_t>(i >> 8);
+        ++top;
+    };
+    for (uint32_t i = 0; i < count_; ++i)
+        if (2u * strength_[i] >= high && ep::state(points_[i]) != kKept) push(i);
+    while (top > 0) {
+        --top;
+        const uint32_t i = scratch[2 * top] | (uint32_t{scratch[2 * top + 1]} << 8);
+        const int32_t x = static_cast<int32_t>(ep::x(points_[i]));
+        const int32_t y = static_cast<int32_t>(ep::y(points_[i]));
+        for (int32_t dy = -1; dy <= 1; ++dy) {
+            uint32_t first = 0, end = 0;
+            span(x - 1, x + 1, y + dy, &first, &end);
+            for (uint32_t j = first; j < end; ++j)
+                if (ep::state(points_[j]) != kKept) push(j);
+        }
+    }
+    // Keep the marked points, rows in order, states back to fresh.
+    uint32_t write = 0;
+    for (uint32_t y = 0; y < height_; ++y) {
+        const uint32_t begin = row_start_[y], end = row_start_[y + 1];
+        row_start_[y] = static_cast<uint16_t>(write);
+        for (uint32_t i = begin; i < end; ++i) {
+            if (ep::state(points_[i]) != kKept) continue;
+            points_[write] = ep::with_state(points_[i], ep::kFresh);
+            strength_[write] = strength_[i];
+            ++write;
+        }
+    }
+    const uint32_t removed = count_ - write;
+    row_start_[height_] = static_cast<uint16_t>(write);
+    count_ = static_cast<uint16_t>(write);
+    return removed;
+}
+
 void EdgeList::end_frame() {
     while (next_row_ <= height_) row_start_[next_row_++] = count_;
 }

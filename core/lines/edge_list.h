@@ -92,6 +92,15 @@ public:
     edge_point& operator[](uint16_t i) { return points_[i]; }
     edge_point operator[](uint16_t i) const { return points_[i]; }
 
+    // Canny's hysteresis on a closed frame: keeps the points of magnitude >= high and every
+    // point joined to one by a chain of 8-connected points of the list (all at or above the
+    // low threshold the list was filled with), drops the rest (not counted in dropped(): a rule,
+    // not a capacity). Scratch:
+    // a stack of 2 bytes a point, scratch_bytes >= 2·size() (the Hough accumulator, unused
+    // until PPHT, serves). Returns the points dropped; 0 and nothing done when the scratch is
+    // too small. States are left 0 (fresh).
+    uint32_t hysteresis(uint16_t high, uint8_t* scratch, uint32_t scratch_bytes);
+
     // Index of the point at (x, y), or -1 when there is none (or y is outside the frame).
     int32_t find(int32_t x, int32_t y) const;
     // Row y's points with x_lo <= x <= x_hi: indices [*first, *end), empty when y is outside

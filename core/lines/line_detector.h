@@ -16,11 +16,27 @@
 #include "lines/edge_stage.h"
 #include "lines/hough.h"
 #include "lines/line_cluster.h"
+#include "lines/smooth_rows.h"
 
 namespace qt {
 
+// The edge map's front end (quadrangle-3kf §2.3, Figure 3: a Canny edge map).
+enum class EdgeFrontEnd : uint8_t {
+    // Ours (default): central differences of the raw rows, one threshold, NMS.
+    threshold_nms,
+    // The paper's Canny: Gaussian smoothing of the camera rows (smooth_rows.h, σ ≈ 0.7 px;
+    // rows of gradient words from the FPGA are used as they come), NMS, hysteresis between
+    // edge_threshold (low) and canny_high (edge_list.h).
+    canny,
+};
+inline const char* edge_front_end_name(EdgeFrontEnd f) {
+    return f == EdgeFrontEnd::canny ? "canny" : "threshold_nms";
+}
+
 struct LineParams {
     uint16_t edge_threshold = 40;  // L1 gradient magnitude for an edge, grey levels (1..510)
+    EdgeFrontEnd front_end = EdgeFrontEnd::threshold_nms;
+    uint16_t canny_high = 0;  // canny: the high threshold, grey levels; 0: 2 · edge_threshold
     HoughParams hough;
     ClusterParams cluster;
     CornerParams corners;
@@ -31,8 +47,9 @@ struct LineParams {
 enum class FinishStage : uint8_t { hough, cluster, quads };
 
 struct LineStats {
-    uint32_t edges = 0;          // edge points kept
-    uint32_t edges_dropped = 0;  // edge points lost to the edge capacity
+    uint32_t edges = 0;             // edge points kept
+    uint32_t edges_dropped = 0;     // edge points lost to the edge capacity
+    uint32_t edges_hysteresis = 0;  // canny: weak edge points not joined to a strong one
     HoughStats hough;
     ClusterStats cluster;
 };
@@ -48,6 +65,7 @@ class LineDetector {
         hough_bins_for(MaxWidth, MaxHeight, Capacity::theta_bins, Capacity::rho_step);
     static constexpr uint16_t MaxSegments = Capacity::segments, MaxLines = Capacity::lines;
     static_assert(MaxSegments <= 255, "clustering handles up to 255 segments");
+    static_assert(HoughBins >= 2u * EdgeCapacity, "the accumulator holds hysteresis' stack");
 
 public:
     // Bytes of RAM one detector occupies (all of it static when the object is).
@@ -73,6 +91,7 @@ public:
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
         const Status e = edge_stage_.begin_frame(width, height, params.edge_threshold, edges_view_);
         if (e != Status::ok) return e;
+        if (params.front_end == EdgeFrontEnd::canny) smooth_.begin_frame(width, height);
         width_ = width;
         height_ = height;
         open_ = true;
@@ -86,11 +105,19 @@ public:
         // after a frame of gradient words is a row after the last one too.
         if (!open_ || !edge_stage_.in_frame()) return Status::not_in_frame;
         Status edge_status = Status::ok;
-        const Status s =
-            gradient_.push_row(pixels, length, [&](uint16_t, const uint16_t* packed, uint16_t n) {
-                const Status e = edge_stage_.push_packed_row(packed, n);
-                if (e != Status::ok) edge_status = e;
+        auto edges = [&](uint16_t, const uint16_t* packed, uint16_t n) {
+            const Status e = edge_stage_.push_packed_row(packed, n);
+            if (e != Status::ok) edge_status = e;
+        };
+        if (params_.front_end == EdgeFrontEnd::canny) {
+            Status g = Status::ok;
+            const Status s = smooth_.push_row(pixels, length, [&](const uint8_t* row, uint16_t n) {
+                const Status r = gradient_.push_row(row, n, edges);
+                if (r != Status::ok) g = r;
             });
+            return row_status(s != Status::ok ? s : g != Status::ok ? g : edge_status);
+        }
+        const Status s = gradient_.push_row(pixels, length, edges);
         return row_status(s != Status::ok ? s : edge_status);
     }
 
@@ -113,6 +140,13 @@ public:
         if (!open_ || edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
             return Status::not_in_frame;
         open_ = false;  // once per frame: PPHT consumes the edge list
+        if (params_.front_end == EdgeFrontEnd::canny) {
+            // Hysteresis before PPHT, its stack in the accumulator PPHT clears when it starts.
+            const uint16_t high = params_.canny_high
+                                      ? params_.canny_high
+                                      : static_cast<uint16_t>(2u * params_.edge_threshold);
+            stats_.edges_hysteresis = edges_view_.hysteresis(high, hough_.bins, HoughBins);
+        }
         stats_.edges = edges_view_.size();
         stats_.edges_dropped = edges_view_.dropped();
         const Status h = hough_segments(edges_view_, width_, height_, params_.hough, hough_.view(),
@@ -152,6 +186,7 @@ public:
     static constexpr uint32_t gradient_bytes() {
         return sizeof(GradientStage<MaxWidth, NmsRowKernel>);
     }
+    static constexpr uint32_t smoothing_bytes() { return sizeof(SmoothRows<MaxWidth>); }
     static constexpr uint32_t edge_stage_bytes() { return sizeof(EdgeStage<MaxWidth>); }
     static constexpr uint32_t edge_list_bytes() {
         return sizeof(EdgeListStorage<EdgeCapacity, MaxHeight>);
@@ -172,6 +207,7 @@ private:
         return s;
     }
 
+    SmoothRows<MaxWidth> smooth_;                     // canny: pixels -> smoothed pixels
     GradientStage<MaxWidth, NmsRowKernel> gradient_;  // pixels -> packed NMS rows, no words
     EdgeStage<MaxWidth> edge_stage_;
     EdgeListStorage<EdgeCapacity, MaxHeight> edges_;

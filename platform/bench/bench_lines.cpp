@@ -176,14 +176,11 @@ std::vector<RowSpec> rows() {
     };
 }
 
-void accuracy(int scenes) {
+void accuracy(int scenes, const qt::LineParams& params, const char* title) {
     static qt::LineDetectorQvga det;
-    const qt::LineParams params;
     const sc::MatchRule rule;
-    std::printf(
-        "\n1. Accuracy, QVGA 320x240, LineDetectorQvga, default LineParams; %d scenes per row, "
-        "scene seeds 1..%d\n",
-        scenes, scenes);
+    std::printf("\n%s, QVGA 320x240, LineDetectorQvga; %d scenes per row, scene seeds 1..%d\n",
+                title, scenes, scenes);
     std::printf(
         "   (same seeds => rows a, b, c share geometry). A truth segment >= %.0f px is found when\n"
         "   a clustered line is within %.0f deg and both ends within %.0f px; FP = line on no "
@@ -436,7 +433,7 @@ struct Caps<qt::LineDetector<C>> {
 };
 
 struct RamColumn {
-    uint32_t bytes[7];  // the parts, other, total
+    uint32_t bytes[8];  // the parts, other, total
     uint32_t edges, theta, rho, segments, lines;
 };
 
@@ -449,12 +446,12 @@ RamColumn ram_column() {
                                                  qt::HoughParams{}.rho_step);
     static_assert(bins == C::bins && C::theta == qt::HoughParams{}.theta_bins,
                   "alias sized for the defaults");
-    const uint32_t parts = Det::gradient_bytes() + Det::edge_stage_bytes() +
-                           Det::edge_list_bytes() + Det::accumulator_bytes() +
-                           Det::line_list_bytes();
-    return {{Det::gradient_bytes(), Det::edge_stage_bytes(), Det::edge_list_bytes(),
-             Det::accumulator_bytes(), Det::line_list_bytes(), Det::ram_bytes() - parts,
-             Det::ram_bytes()},
+    const uint32_t parts = Det::smoothing_bytes() + Det::gradient_bytes() +
+                           Det::edge_stage_bytes() + Det::edge_list_bytes() +
+                           Det::accumulator_bytes() + Det::line_list_bytes();
+    return {{Det::smoothing_bytes(), Det::gradient_bytes(), Det::edge_stage_bytes(),
+             Det::edge_list_bytes(), Det::accumulator_bytes(), Det::line_list_bytes(),
+             Det::ram_bytes() - parts, Det::ram_bytes()},
             C::edges,
             hp.theta_bins,
             bins / hp.theta_bins,
@@ -470,14 +467,15 @@ void ram() {
         "\n   capacities: template arguments of LineDetectorQvga / LineDetectorVga, rho bins from "
         "hough_bins_for.\n");
     std::printf("   %-36s %12s %12s\n", "part", "QVGA 320x240", "VGA 640x480");
-    const char* names[7] = {"gradient stage",
+    const char* names[8] = {"Canny smoothing rows",
+                            "gradient stage",
                             "edge stage (NMS rows)",
                             "edge list (points + row index)",
                             "accumulator (8-bit bins + cos/sin)",
                             "segment + line lists + scratch",
                             "other (params, stats, views)",
                             "total = ram_bytes()"};
-    for (int i = 0; i < 7; ++i)
+    for (int i = 0; i < 8; ++i)
         std::printf("   %-36s %12u %12u\n", names[i], q.bytes[i], v.bytes[i]);
     std::printf("   %-36s %12u %12u\n", "capacity: edge points", q.edges, v.edges);
     char qb[24], vb[24];
@@ -505,7 +503,15 @@ int main(int argc, char** argv) {
         return 2;
     }
     std::printf("lines stage host benchmark (timings: medians on a noisy shared 2-core machine)\n");
-    accuracy(scenes);
+    accuracy(scenes, qt::LineParams{}, "1. Accuracy, default LineParams (threshold + NMS)");
+    // The paper's Canny edge map (quadrangle-3kf §2.3), thresholds chosen for its smoothed
+    // gradient (a step's central difference is 3/4 of the raw one's): low 30, high 60.
+    qt::LineParams canny;
+    canny.front_end = qt::EdgeFrontEnd::canny;
+    canny.edge_threshold = 30;
+    canny.canny_high = 60;
+    accuracy(scenes, canny,
+             "1b. Accuracy, the paper's Canny front end (smoothing, NMS, hysteresis 30/60)");
     vote_window(scenes);
     vga_time();
     ram();

@@ -438,7 +438,8 @@ TargetSoakResult run_target_soak(const TargetSoakConfig& cfg) {
         FrameGeometry g;
         for (int i = 0; i < 9; ++i) g.h.m[i] = static_cast<float>(hd.m[i] / hd.m[8]);
         g.valid = geometry != 1;
-        g.reprojection_px = geometry == 2 ? 3.0f : 0.3f;
+        g.reprojection_px = g.d_rep_capped_px = geometry == 2 ? 3.0f : 0.3f;
+        g.d_rep = geometry == 2 ? 1.0e4f : 9.0f;
         const bool geometry_ok = geometry == 0;
         const bool visible = in_image(aim);
         const bool offered = measure && visible;

@@ -86,6 +86,25 @@ const FlagTable<DetectOptions, Command>& table() {
                 "edge-threshold", "LEVEL",
                 "edge pixel: L1 gradient magnitude |gx|+|gy| at least this, grey levels, 1..510", 1,
                 510, [](DetectOptions& o) -> uint16_t& { return o.params.lines.edge_threshold; }),
+            {"edge-front-end", "NAME",
+             "threshold_nms (ours: one threshold and NMS on the raw rows) or canny (the paper's: "
+             "Gaussian smoothing, NMS, hysteresis --edge-threshold..--canny-high)",
+             [](DetectOptions o) {
+                 return std::string(edge_front_end_name(o.params.lines.front_end));
+             },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 for (EdgeFrontEnd f : {EdgeFrontEnd::threshold_nms, EdgeFrontEnd::canny})
+                     if (t == edge_front_end_name(f)) {
+                         o.params.lines.front_end = f;
+                         return true;
+                     }
+                 e = "'" + t + "' is not threshold_nms or canny";
+                 return false;
+             }},
+            integer<uint16_t>(
+                "canny-high", "LEVEL",
+                "canny: hysteresis high threshold, grey levels, 0..510 (0: twice --edge-threshold)",
+                0, 510, [](DetectOptions& o) -> uint16_t& { return o.params.lines.canny_high; }),
             integer<uint16_t>(
                 "theta-bins", "N",
                 "Hough accumulator angle bins over 180 degrees (90 = 2 degrees each), 2..90", 2, 90,

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <functional>
+#include <initializer_list>
+#include <vector>
 
 #include "cli/flag_table.h"
 #include "cli/parse_number.h"
@@ -57,6 +59,31 @@ Option score_q15(const char* name, const char* help,
                 return true;
             },
             GeometryCommand::homography};
+}
+
+// A flag choosing one of an enumeration's values by name: the paper's version of a choice is
+// named "paper" (docs/fidelity.md).
+template <typename E>
+Option choice(const char* name, const char* help, std::initializer_list<E> values,
+              const char* (*to_name)(E), std::function<E&(TargetOptions&)> field) {
+    const std::vector<E> all(values);
+    return {name,
+            "NAME",
+            help,
+            [field, to_name](TargetOptions o) { return std::string(to_name(field(o))); },
+            [field, to_name, all](const std::string& t, TargetOptions& o, std::string& e) {
+                std::string names;
+                for (E v : all) {
+                    if (t == to_name(v)) {
+                        field(o) = v;
+                        return true;
+                    }
+                    names += std::string(names.empty() ? "" : ", ") + to_name(v);
+                }
+                e = "'" + t + "' is not one of " + names;
+                return false;
+            },
+            GeometryCommand::target};
 }
 
 bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
@@ -136,10 +163,38 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                  "NDS gate of equation (6): a match is used when D_nds <= this, 0.01..1e6", 0.01,
                  1e6, [](TargetOptions& o) -> float& { return o.config.tracker.gate_nds; }),
             real("gate-rep", "PX",
-                 "reprojection gate of equation (7): homography trusted when its RMS error <= "
-                 "this, px, 0.01..100",
+                 "capped D_rep gate of equation (7): homography trusted when the capped RMS over "
+                 "all matched pairs <= this, px, 0.01..100",
                  0.01, 100,
                  [](TargetOptions& o) -> float& { return o.config.tracker.gate_rep_px; }),
+            choice<TargetFormulation>(
+                "formulation",
+                "where the filter lives: reference (ours: the image of the last reset frame) or "
+                "paper (the current image; unseen, x_n = A x_m, equation (11))",
+                {TargetFormulation::reference, TargetFormulation::paper}, target_formulation_name,
+                [](TargetOptions& o) -> TargetFormulation& {
+                    return o.config.tracker.formulation;
+                }),
+            choice<SearchRegionShape>(
+                "search-region",
+                "square (ours: 3 sigma, clamped to --min-radius..--max-radius) or paper (four "
+                "corners mapped by the accumulated homography, carried while unseen)",
+                {SearchRegionShape::square, SearchRegionShape::paper}, search_region_name,
+                [](TargetOptions& o) -> SearchRegionShape& { return o.config.tracker.region; }),
+            choice<RepGate>(
+                "rep-gate",
+                "D_rep of equation (7) over all matched pairs: capped (ours: RMS of terms capped "
+                "at (2 inlier-px)^2, <= --gate-rep) or paper (the sum, <= --th-rep)",
+                {RepGate::capped, RepGate::paper}, rep_gate_name,
+                [](TargetOptions& o) -> RepGate& { return o.config.tracker.rep_gate; }),
+            real("th-rep", "PX2", "paper D_rep gate: the sum over the pairs, px^2, 0..1e9", 0, 1e9,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.th_rep_px2; }),
+            choice<TargetDetector>(
+                "detector",
+                "the measurement (Table III step 2): ncc_template (ours) or morphological (the "
+                "paper's top-hat and clustering)",
+                {TargetDetector::ncc_template, TargetDetector::morphological}, target_detector_name,
+                [](TargetOptions& o) -> TargetDetector& { return o.config.detector; }),
             real("reset-nds", "D", "reset when D_nds <= this ..., 0..1e6", 0, 1e6,
                  [](TargetOptions& o) -> float& { return o.config.tracker.reset_nds; }),
             real("reset-det-s", "PX4", "... and det S <= this, px^4, 0..1e12", 0, 1e12,

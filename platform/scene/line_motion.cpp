@@ -145,7 +145,18 @@ double track_mean_overlap(const GtTrack& track, const LineTrackerParams& params,
                           const MotionOptions& options, uint64_t noise_stream) {
     if (track.size() < 2) throw std::invalid_argument("track_mean_overlap: fewer than 2 frames");
     Gaussian noise(Pcg32(options.seed, kStreamNoise + 2 * noise_stream));  // a stream per track
+    Pcg32 pieces(options.seed, kStreamNoise + 2 * noise_stream + 1);
     const double sigma = options.noise_sigma;
+    const double min_share = options.min_length_share;
+    auto uniform = [&] { return pieces.below(1u << 24) / static_cast<double>(1u << 24); };
+    // The frame's segment: the whole one, or a random piece of it.
+    auto frame_segment = [&](const GtSegment& s) {
+        if (!(min_share < 1)) return s;
+        const double share = min_share + (1 - min_share) * uniform();
+        const double a = (1 - share) * uniform(), b = a + share;
+        const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
+        return GtSegment{s.x1 + a * dx, s.y1 + a * dy, s.x1 + b * dx, s.y1 + b * dy};
+    };
     auto measure = [&](const GtSegment& t) {
         if (sigma <= 0) return measured_segment(t);
         GtSegment n = t;
@@ -156,12 +167,13 @@ double track_mean_overlap(const GtTrack& track, const LineTrackerParams& params,
         return measured_segment(n);
     };
     LineTracker tracker;
-    tracker.init(measure(track[0]), params);
+    tracker.init(measure(frame_segment(track[0])), params);
     double sum = 0;
     for (std::size_t k = 1; k < track.size(); ++k) {
         tracker.predict();
-        sum += overlap_ratio(track[k], tracker.line(), options.band_px);
-        tracker.update(measure(track[k]));
+        const GtSegment truth = frame_segment(track[k]);
+        sum += overlap_ratio(truth, tracker.line(), options.band_px);
+        tracker.update(measure(truth));
     }
     return sum / static_cast<double>(track.size() - 1);
 }

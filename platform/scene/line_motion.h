@@ -72,6 +72,12 @@ struct MotionOptions {
     double noise_sigma = 0;  // Gaussian noise on each measured end-point coordinate, px (§3: 0)
     uint64_t seed = 1;       // the random segments / start angles and the noise
     double band_px = 2;      // width of the ground-truth band, px (§3: 2)
+    // §3: "the length of the line is not fixed for some data set to simulate the lines
+    // extracted in real images". Below 1, each frame's segment is a random piece of the
+    // track's segment, of length share uniform in [min_length_share, 1] and placed uniformly
+    // along it (its own stream, the same for every tracker); it is that frame's truth and the
+    // measurement. 1: fixed length.
+    double min_length_share = 1;
 };
 
 // One tracker over one track: init() on frame 0's measurement; then for each frame k >= 1,

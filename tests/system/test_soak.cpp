@@ -177,8 +177,10 @@ struct PipelineRun {
 };
 
 bool trusted(const TargetFrame& f, const TargetTrackerParams& p) {
-    return f.geometry.ransac.status == HomographyStatus::ok &&
-           f.geometry.ransac.reprojection_px <= p.gate_rep_px;
+    FrameGeometry g;
+    g.d_rep = f.geometry.ransac.d_rep;
+    g.d_rep_capped_px = f.geometry.ransac.d_rep_capped_px;
+    return f.geometry.ransac.status == HomographyStatus::ok && geometry_trusted(g, p);
 }
 
 }  // namespace

@@ -594,6 +594,18 @@ RansacResult estimate_homography(const PointPair* pairs, uint16_t n, const Ransa
     }
     const float mean = sum / static_cast<float>(cur_count);  // cur_count >= min_inl >= 4
     res.reprojection_px = mean <= FLT_MAX ? sqrtf(mean) : FLT_MAX;
+    // D_rep over every matched pair (inliers and the rest), as the paper writes equation (7),
+    // and its capped mean.
+    const float cap = 4.0f * thr2;  // (2·inlier_px)²
+    float all = 0, capped = 0;
+    for (uint16_t i = 0; i < n; ++i) {
+        const float e = reprojection_error_sq(cur, pairs[i]);  // >= 0, FLT_MAX at most
+        all = all + e <= FLT_MAX ? all + e : FLT_MAX;
+        capped += e < cap ? e : cap;
+    }
+    res.d_rep = all;
+    const float capped_mean = capped / static_cast<float>(n);
+    res.d_rep_capped_px = capped_mean <= FLT_MAX ? sqrtf(capped_mean) : FLT_MAX;
     return res;
 }
 

@@ -79,7 +79,17 @@ struct RansacResult {
     uint16_t inliers = 0;       // pairs within inlier_px of the refitted H (no_consensus: of the
                                 // best 4-point hypothesis, for diagnosis)
     uint16_t iterations = 0;    // hypotheses drawn
-    float reprojection_px = 0;  // sqrt of the mean of equation (7) over the inliers, px
+    float reprojection_px = 0;  // sqrt of the mean of equation (7) over the inliers, px: at
+                                // most ~inlier_px·√2 by construction, a diagnostic, not a gate
+    // Equation (7) over every pair the homography is judged on (all n matched pairs, inliers or
+    // not), the paper's D_rep: Σ of the Sampson error, px² (saturates at FLT_MAX). A wrong but
+    // self-consistent H (a moving object dominating the matches, a repeated texture) leaves
+    // the pairs it does not explain with large terms; RMS over the inliers cannot see them.
+    float d_rep = 0;
+    // The same terms each capped at (2·inlier_px)² before averaging over the n pairs, as an
+    // RMS, px: one gross mismatch adds at most (2·inlier_px)²/n, so the gate measures the share
+    // of pairs H fails to explain rather than how far the worst mismatch is.
+    float d_rep_capped_px = 0;
 };
 
 // RANSAC over n pairs (n <= 65535): samples of 4 drawn by Pcg32(seed), samples with a

@@ -44,6 +44,11 @@ public:
     // Carries the state into the image that h maps this one to. False (state unchanged) when
     // the position maps to infinity.
     bool change_frame(const Homography& h);
+    // Moves the position to (x, y), px; velocity and covariance unchanged.
+    void set_position(float x, float y) {
+        x_[0] = x;
+        x_[1] = y;
+    }
 
     float x() const { return x_[0]; }
     float y() const { return x_[1]; }

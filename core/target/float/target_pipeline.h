@@ -18,9 +18,18 @@
 #include "target/float/frame_homography.h"
 #include "target/float/target_tracker.h"
 #include "target/harris.h"
+#include "target/morph_detect.h"
 #include "target/template_search.h"
 
 namespace qt {
+
+// The measurement: how the target is found in the search region (Table III step 2).
+enum class TargetDetector : uint8_t {
+    ncc_template,   // ours (default): the NCC template of frame 0 (template_search.h)
+    morphological,  // the paper's: top-hat and clustering (morph_detect.h), polarity, element
+                    // and area learnt from the box of frame 0
+};
+const char* target_detector_name(TargetDetector d);
 
 struct TargetPipelineParams {
     HarrisParams harris;
@@ -33,7 +42,13 @@ struct TargetPipelineParams {
     // let the sub-pixel errors of successive cuts add up to a drift. 0: never. template_only
     // refreshes at every match, as the paper's template tracker does (its Fig. 8).
     int32_t refresh_score_q15 = 27853;
+    TargetDetector detector = TargetDetector::ncc_template;
+    uint8_t morph_min_contrast = 12;  // morphological: a detection's top-hat, grey levels
 };
+
+inline const char* target_detector_name(TargetDetector d) {
+    return d == TargetDetector::morphological ? "morphological" : "ncc_template";
+}
 
 // What one frame gave.
 struct TargetFrame {
@@ -104,7 +119,11 @@ public:
         y_ = 0;
         open_ = true;
         if (pending_target_) {
-            capture_.begin(roi_x_, roi_y_, roi_w_, roi_h_, width, height);
+            // The box and a margin around it (the morphological detector's opening needs the
+            // target's surroundings).
+            constexpr int32_t m = MaxTemplate / 2 + 2;
+            capture_.begin(roi_x_ - m, roi_y_ - m, int32_t{roi_w_} + 2 * m, int32_t{roi_h_} + 2 * m,
+                           width, height);
         } else if (tracking_) {
             const SearchWindow e = tracker_.expected();
             const int32_t half = static_cast<int32_t>(params_.tracker.max_radius_px >
@@ -173,6 +192,8 @@ public:
             g.valid = out.geometry.ransac.status == HomographyStatus::ok;
             g.h = out.geometry.ransac.h;
             g.reprojection_px = out.geometry.ransac.reprojection_px;
+            g.d_rep = out.geometry.ransac.d_rep;
+            g.d_rep_capped_px = out.geometry.ransac.d_rep_capped_px;
             if (g.valid) last_h_ = g.h;
         }
         if (pending_target_) {
@@ -187,6 +208,7 @@ public:
                           static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1),
                           width_, height_, params_.tracker);
             last_h_ = Homography{};
+            learn_morphology(r);
             // The box's centre is the template's: no offset.
             offset_x_q8_ = 0;
             offset_y_q8_ = 0;
@@ -199,7 +221,20 @@ public:
             out.window = tracker_.predict(g);
             mark(TargetStage::predict);
             TargetMeasurement m;
-            if (out.window.radius > 0) {
+            if (out.window.radius > 0 && params_.detector == TargetDetector::morphological) {
+                const MorphDetection d = morph_detector_.detect(
+                    capture_.region(), round_px(out.window.x), round_px(out.window.y),
+                    static_cast<uint16_t>(out.window.radius), polarity_, morph_);
+                out.hit.found = d.found;
+                out.hit.x_q8 = d.x_q8;
+                out.hit.y_q8 = d.y_q8;
+                out.hit.score_q15 = d.found ? 32767 : 0;
+                out.hit.positions = d.clusters;
+                m.found = d.found;
+                m.x = static_cast<float>(d.x_q8) * (1.0f / 256.0f);
+                m.y = static_cast<float>(d.y_q8) * (1.0f / 256.0f);
+                m.score = d.found ? 1.0f : 0.0f;
+            } else if (out.window.radius > 0) {
                 const float rad = out.window.radius;
                 out.hit = search_template(template_, capture_.region(), round_px(out.window.x),
                                           round_px(out.window.y), static_cast<uint16_t>(rad));
@@ -216,7 +251,8 @@ public:
             const bool accepted = out.estimate.state == TargetState::measured ||
                                   out.estimate.state == TargetState::reacquired;
             const bool every = params_.tracker.method == TargetMethod::template_only;
-            if (accepted && (every || out.hit.score_q15 < params_.refresh_score_q15))
+            if (accepted && params_.detector == TargetDetector::ncc_template &&
+                (every || out.hit.score_q15 < params_.refresh_score_q15))
                 refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
             mark(TargetStage::refresh);
         }
@@ -248,6 +284,30 @@ private:
         offset_x_q8_ = x_q8 - (left * 256 + (w - 1) * 128);
         offset_y_q8_ = y_q8 - (top * 256 + (h - 1) * 128);
     }
+    // The morphological detector's settings from the box of frame 0: an element two pixels
+    // wider than the box (odd), the polarity in which a cluster is found nearest the box's
+    // centre, and areas within 1/4..4× of that cluster's.
+    void learn_morphology(const PixelRegion& r) {
+        const int32_t side = roi_w_ > roi_h_ ? roi_w_ : roi_h_;
+        morph_ = MorphParams{};
+        morph_.element = static_cast<uint8_t>((side + 2) | 1);
+        morph_.min_contrast = params_.morph_min_contrast;
+        morph_.min_area = 1;
+        morph_.max_area = 65535;
+        const int32_t cx = roi_x_ + (roi_w_ - 1) / 2, cy = roi_y_ + (roi_h_ - 1) / 2;
+        const uint16_t rad = static_cast<uint16_t>(side / 2);
+        const MorphDetection b = morph_detector_.detect(r, cx, cy, rad, Polarity::bright, morph_);
+        const MorphDetection d = morph_detector_.detect(r, cx, cy, rad, Polarity::dark, morph_);
+        auto dist = [&](const MorphDetection& k) {
+            const int64_t dx = k.x_q8 - int64_t{cx} * 256, dy = k.y_q8 - int64_t{cy} * 256;
+            return dx * dx + dy * dy;
+        };
+        const bool dark = d.found && (!b.found || dist(d) < dist(b));
+        polarity_ = dark ? Polarity::dark : Polarity::bright;
+        const uint16_t area = dark ? d.area : b.found ? b.area : 16;
+        morph_.min_area = static_cast<uint16_t>(area / 4 > 1 ? area / 4 : 1);
+        morph_.max_area = static_cast<uint16_t>(area > 16383 ? 65535 : area * 4);
+    }
     static int32_t floor_div256(int32_t v) { return v >= 0 ? v / 256 : -((255 - v) / 256); }
     // This frame's corners become the next frame's previous ones (a copy: the detector's set
     // is overwritten by the next frame, and one copy costs less RAM than a second detector set).
@@ -267,6 +327,9 @@ private:
     RegionCapture<MaxRegion, MaxRegion> capture_;
     TargetTemplate<MaxTemplate> template_;
     TargetTracker tracker_;
+    MorphDetector<MaxRegion, MaxRegion> morph_detector_;
+    MorphParams morph_;
+    Polarity polarity_ = Polarity::bright;
     Homography last_h_;
     uint16_t width_ = 0, height_ = 0, y_ = 0;
     bool have_previous_ = false;

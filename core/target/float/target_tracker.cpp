@@ -25,6 +25,35 @@ const char* target_method_name(TargetMethod m) {
     return "unknown";
 }
 
+const char* rep_gate_name(RepGate g) {
+    switch (g) {
+        case RepGate::capped: return "capped";
+        case RepGate::paper: return "paper";
+    }
+    return "unknown";
+}
+
+const char* target_formulation_name(TargetFormulation f) {
+    switch (f) {
+        case TargetFormulation::reference: return "reference";
+        case TargetFormulation::paper: return "paper";
+    }
+    return "unknown";
+}
+
+const char* search_region_name(SearchRegionShape r) {
+    switch (r) {
+        case SearchRegionShape::square: return "square";
+        case SearchRegionShape::paper: return "paper";
+    }
+    return "unknown";
+}
+
+bool geometry_trusted(const FrameGeometry& g, const TargetTrackerParams& p) {
+    return p.rep_gate == RepGate::paper ? g.d_rep <= p.th_rep_px2
+                                        : g.d_rep_capped_px <= p.gate_rep_px;
+}
+
 void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
                          const TargetTrackerParams& params) {
     params_ = params;
@@ -39,6 +68,12 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     bad_geometry_ = 0;
     last_x_ = x;
     last_y_ = y;
+    ref_x_ = x;
+    ref_y_ = y;
+    for (int i = 0; i < 4; ++i) {
+        roi_x_[i] = x;
+        roi_y_[i] = y;
+    }
 }
 
 bool TargetTracker::in_image(float x, float y) const {
@@ -47,12 +82,18 @@ bool TargetTracker::in_image(float x, float y) const {
            y < static_cast<float>(height_) - 0.5f;
 }
 
+bool TargetTracker::paper_formulation() const {
+    return params_.method == TargetMethod::fused && params_.formulation == TargetFormulation::paper;
+}
+
 bool TargetTracker::accumulation_plausible() const {
-    // A maps the estimate to a finite point, and the area around it by a factor within
-    // [1/max_scale², max_scale²] (a camera whose altitude changed more than max_scale-fold since
-    // frame m, or an A gone wrong).
+    // A maps the estimate (paper formulation: the reference point) to a finite point, and the
+    // area around it by a factor within [1/max_scale², max_scale²] (a camera whose altitude
+    // changed more than max_scale-fold since frame m, or an A gone wrong).
     float j[4];
-    if (!homography_jacobian(acc_, kf_.x(), kf_.y(), j)) return false;
+    const bool paper = paper_formulation();
+    if (!homography_jacobian(acc_, paper ? ref_x_ : kf_.x(), paper ? ref_y_ : kf_.y(), j))
+        return false;
     const float det = j[0] * j[3] - j[1] * j[2];
     const float s2 = params_.max_scale * params_.max_scale;
     return det >= 1.0f / s2 && det <= s2;
@@ -61,6 +102,7 @@ bool TargetTracker::accumulation_plausible() const {
 void TargetTracker::position(float& x, float& y) const {
     x = kf_.x();
     y = kf_.y();
+    if (paper_formulation()) return;  // the filter lives in the current image
     float xo, yo;
     if (apply_homography(acc_, x, y, xo, yo)) {
         x = xo;
@@ -80,7 +122,7 @@ SearchWindow TargetTracker::predict(const FrameGeometry& g) {
         case TargetMethod::filter_only: break;
         case TargetMethod::fused:
         case TargetMethod::homography_only: {
-            geometry_ok_ = g.valid && g.reprojection_px <= params_.gate_rep_px;
+            geometry_ok_ = g.valid && geometry_trusted(g, params_);
             if (geometry_ok_) {
                 last_h_ = g.h;
                 bad_geometry_ = 0;
@@ -91,24 +133,91 @@ SearchWindow TargetTracker::predict(const FrameGeometry& g) {
             // A product that degenerates leaves A as it was; the plausibility test below and
             // the lost rule catch an A that has stopped describing the camera.
             if (multiply_homographies(last_h_, acc_, next)) acc_ = next;
+            // The paper's formulation: the filter is carried into this frame's image.
+            if (paper_formulation()) kf_.change_frame(last_h_);
             break;
         }
     }
     kf_.predict();
-    position(w.x, w.y);
-    if (params_.method == TargetMethod::homography_only) return w;  // radius 0: never measured
-    // S in the current image, to first order: J S Jᵀ with J the Jacobian of A at x̂.
-    const Innovation gate = kf_.gate();
+    if (params_.method == TargetMethod::homography_only) {
+        position(w.x, w.y);
+        return w;  // radius 0: never measured
+    }
+    return window_from_state();
+}
+
+// S in the current image, to first order: J S Jᵀ with J the Jacobian at x̂ of the map from
+// the filter's image (A; the identity in the paper's formulation). s[0], s[2]: its diagonal.
+static void current_s(const TargetKalman& kf, const Homography& a, bool identity, float s[2]) {
+    const Innovation gate = kf.gate();
     float j[4] = {1, 0, 0, 1};
-    homography_jacobian(acc_, kf_.x(), kf_.y(), j);
-    const float s00 =
-        j[0] * j[0] * gate.s[0] + 2 * j[0] * j[1] * gate.s[1] + j[1] * j[1] * gate.s[2];
-    const float s11 =
-        j[2] * j[2] * gate.s[0] + 2 * j[2] * j[3] * gate.s[1] + j[3] * j[3] * gate.s[2];
-    const float r = params_.gate_sigmas * sqrtf(s00 > s11 ? s00 : s11);
+    if (!identity) homography_jacobian(a, kf.x(), kf.y(), j);
+    s[0] = j[0] * j[0] * gate.s[0] + 2 * j[0] * j[1] * gate.s[1] + j[1] * j[1] * gate.s[2];
+    s[1] = j[2] * j[2] * gate.s[0] + 2 * j[2] * j[3] * gate.s[1] + j[3] * j[3] * gate.s[2];
+}
+
+SearchWindow TargetTracker::window_from_state() {
+    if (params_.method == TargetMethod::fused && params_.region == SearchRegionShape::paper)
+        return paper_region(unseen_ == 0);
+    SearchWindow w;
+    position(w.x, w.y);
+    float s[2];
+    current_s(kf_, acc_, paper_formulation() || params_.method == TargetMethod::filter_only, s);
+    const float r = params_.gate_sigmas * sqrtf(s[0] > s[1] ? s[0] : s[1]);
     w.radius = r < params_.min_radius_px   ? params_.min_radius_px
                : r > params_.max_radius_px ? params_.max_radius_px
                                            : r;
+    return w;
+}
+
+SearchWindow TargetTracker::paper_region(bool refresh) {
+    SearchWindow w;
+    w.corners = true;
+    const bool paper = paper_formulation();
+    if (refresh) {
+        // Four points x̂ ± k·(σx, σy) in the filter's image, mapped into this one by A (the
+        // paper's formulation: the filter's image is this one).
+        const Innovation gate = kf_.gate();
+        const float hx = params_.gate_sigmas * sqrtf(gate.s[0]);
+        const float hy = params_.gate_sigmas * sqrtf(gate.s[2]);
+        const float px[4] = {kf_.x() - hx, kf_.x() + hx, kf_.x() + hx, kf_.x() - hx};
+        const float py[4] = {kf_.y() - hy, kf_.y() - hy, kf_.y() + hy, kf_.y() + hy};
+        for (int i = 0; i < 4; ++i) {
+            float xo = px[i], yo = py[i];
+            if (paper || apply_homography(acc_, px[i], py[i], xo, yo)) {
+                roi_x_[i] = xo;
+                roi_y_[i] = yo;
+            }
+        }
+    } else {
+        // Perturbed: the region of the last measured frame carried by this frame's homography
+        // (so, since then, by the accumulated one).
+        for (int i = 0; i < 4; ++i) {
+            float xo, yo;
+            if (apply_homography(last_h_, roi_x_[i], roi_y_[i], xo, yo)) {
+                roi_x_[i] = xo;
+                roi_y_[i] = yo;
+            }
+        }
+    }
+    float x0 = roi_x_[0], x1 = roi_x_[0], y0 = roi_y_[0], y1 = roi_y_[0];
+    bool inside = true;
+    for (int i = 0; i < 4; ++i) {
+        w.cx[i] = roi_x_[i];
+        w.cy[i] = roi_y_[i];
+        x0 = roi_x_[i] < x0 ? roi_x_[i] : x0;
+        x1 = roi_x_[i] > x1 ? roi_x_[i] : x1;
+        y0 = roi_y_[i] < y0 ? roi_y_[i] : y0;
+        y1 = roi_y_[i] > y1 ? roi_y_[i] : y1;
+        inside = inside && in_image(roi_x_[i], roi_y_[i]);
+    }
+    w.x = 0.5f * (x0 + x1);
+    w.y = 0.5f * (y0 + y1);
+    const float r = 0.5f * (x1 - x0 > y1 - y0 ? x1 - x0 : y1 - y0);
+    w.radius = r > params_.max_radius_px ? params_.max_radius_px : r;
+    // "Wait for that region of interest transformed by homography comes into FOV": while the
+    // target is perturbed, no search until the whole region is inside the image.
+    if (!refresh && !inside) w.radius = 0;
     return w;
 }
 
@@ -142,7 +251,8 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     }
     const Innovation gate = kf_.gate();
     float j[4] = {1, 0, 0, 1};
-    homography_jacobian(acc_, kf_.x(), kf_.y(), j);
+    const bool paper = paper_formulation();
+    if (!paper) homography_jacobian(acc_, kf_.x(), kf_.y(), j);
     const float det_j = j[0] * j[3] - j[1] * j[2];
     e.det_s = gate.det_s * det_j * det_j;  // det(J S Jᵀ), px⁴ in the current image
     if (state_ == TargetState::lost) {
@@ -159,7 +269,8 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         // The measurement in the reference image: A⁻¹ z (equation (10)).
         float zx = m.x, zy = m.y;
         Homography inv;
-        const bool mapped = invert_homography(acc_, inv) && apply_homography(inv, m.x, m.y, zx, zy);
+        const bool mapped =
+            paper || (invert_homography(acc_, inv) && apply_homography(inv, m.x, m.y, zx, zy));
         if (mapped) {
             in = kf_.innovation(zx, zy);
             e.nds = in.nds;
@@ -171,13 +282,18 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         state_ = unseen_ > 0 ? TargetState::reacquired : TargetState::measured;
         unseen_ = 0;
         if (params_.method == TargetMethod::fused && params_.reset && in.nds <= params_.reset_nds &&
-            e.det_s <= params_.reset_det_s && kf_.change_frame(acc_)) {
+            e.det_s <= params_.reset_det_s && (paper || kf_.change_frame(acc_))) {
             acc_ = Homography{};  // Table III: the accumulation starts again at this frame
+            ref_x_ = kf_.x();     // x_m of equation (11), m = this frame
+            ref_y_ = kf_.y();
             e.reset = true;
         }
     } else {
         if (unseen_ < UINT16_MAX) ++unseen_;
         float x, y;
+        // The paper's formulation while perturbed: x_n = A x_m (equation (11)); the filter
+        // follows it (re-initialised there when the target returns).
+        if (paper && apply_homography(acc_, ref_x_, ref_y_, x, y)) kf_.set_position(x, y);
         position(x, y);
         state_ = in_image(x, y) ? TargetState::predicted : TargetState::out_of_view;
         const bool geometry_gone =
