@@ -155,8 +155,10 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     if (len <= 0 || len32 <= 2 * margin32 + 64) return false;
     Walk w{to32(a.x),
            to32(a.y),
-           static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) * (int64_t{1} << 30)) / len),
-           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) * (int64_t{1} << 30)) / len),
+           static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) * (int64_t{1} << 30)) /
+                                len),
+           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) * (int64_t{1} << 30)) /
+                                len),
            margin32,
            len32 - margin32};
     const Polarity pol = polarity_of(line);
