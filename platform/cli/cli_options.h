@@ -32,7 +32,8 @@ struct DetectOptions {
     BoardParams params;
     uint16_t display_width = 1024, display_height = 768;  // display pixels (rule 5, homography)
     uint16_t max_quads = 4;                               // quadrangles reported, 1..4
-    TrackOptions track;                                   // track only
+    uint8_t bin = 0;  // binning factor of frames over 640 × 480, 1..16; 0: the smallest that fits
+    TrackOptions track;  // track only
 
     DetectOptions();  // params.quads.display_aspect follows the display size
 };

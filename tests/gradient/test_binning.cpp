@@ -193,6 +193,9 @@ TEST_CASE("binning: the factor that fits and the coordinate mapping, worked by h
     CHECK(bin_factor_to_fit(1281, 961, 640, 480) == 2);  // 640 × 480: the odd pixels dropped
     CHECK(bin_factor_to_fit(1282, 720, 640, 480) == 3);  // 641 wide by 2
     CHECK(bin_factor_to_fit(1920, 1080, 640, 480) == 3);
+    CHECK(bin_factor_to_fit(800, 600, 640, 480) == 2);
+    CHECK(bin_factor_to_fit(1280, 960, 640, 480) == 2);
+    CHECK(bin_factor_to_fit(2592, 1944, 640, 480) == 5);  // by 4: 648 × 486
     CHECK(bin_factor_to_fit(3840, 2160, 640, 480) == 6);
     CHECK(bin_factor_to_fit(10240, 100, 640, 480) == 16);
     CHECK(bin_factor_to_fit(10255, 100, 640, 480) == 16);  // 640.9: the last 15 columns dropped
