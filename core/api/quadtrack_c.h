@@ -114,7 +114,8 @@ enum qt_contrast {
 /* The parameters tuned in the field, in integer units, each with its accepted range;
  * qt_detector_init and qt_tracker_init refuse a config with any field outside its range
  * (QT_BAD_CONFIG). Everything not here keeps the C++ defaults (BoardParams{} and
- * default_quad_tracker_params(width, height); see the README's tables). Enumerated fields are
+ * default_quad_tracker_params(width, height); see docs/lines.md, docs/quadrangles.md and
+ * docs/tracking.md for their tables). Enumerated fields are
  * plain integers so that the struct's layout does not depend on the size of an enum (8 bits
  * with arm-none-eabi's short enums, 32 bits on hosts). */
 typedef struct qt_config {
@@ -166,7 +167,8 @@ typedef struct qt_line {
 typedef struct qt_quad {
     qt_point corners[4]; /* q16.16 px */
     uint8_t lines[4];    /* side i lies on line lines[i] (qt_get_line's index) */
-    int32_t score;       /* share of the perimeter covered by the sides' segments, q16.16, 0..1 */
+    int32_t score;       /* share of the perimeter with edge evidence of each side's polarity
+                            (quad_refine.h), q16.16, 0..1 */
 } qt_quad;
 
 /* Values of qt_tracked_quad.state. */
@@ -181,7 +183,7 @@ enum qt_track_lost {
     QT_LOST_NONE = 0,
     QT_LOST_SIDE_UNSEEN = 1,        /* a side predicted for more than max_predicted frames */
     QT_LOST_SHAPE = 2,              /* the sides no longer make a convex quadrangle with
-                                        sides of 20..2048 px */
+                                        sides from a tenth of the frame height to 2048 px */
     QT_LOST_SATURATED = 3,          /* a filter saturated */
     QT_LOST_DETECTION_DISAGREES = 4 /* no side matched, and the detection is elsewhere */
 };

@@ -148,7 +148,7 @@ public:
     uint16_t width() const { return width_; }  // of the frame begun last, pixels
     uint16_t height() const { return height_; }
 
-    // RAM of the parts, bytes, for the README's table.
+    // RAM of the parts, bytes, for the bench's table (bash bench.sh lines-host, docs/lines.md).
     static constexpr uint32_t gradient_bytes() {
         return sizeof(GradientStage<MaxWidth, NmsRowKernel>);
     }

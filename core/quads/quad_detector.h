@@ -23,7 +23,8 @@ struct Quad {
     Point16 corners[4];  // anti-clockwise as seen, corner 0 has the smallest x + y (quad_rules.h)
     uint8_t lines[4];    // index into the input lines of the line along side i (corner i -> i + 1),
                          // or kCompletedSide (see detect_quads)
-    q16_16 score;        // fraction of the perimeter covered by the four lines' segments, [0, 1]
+    q16_16 score;        // fraction of the perimeter covered by the four lines' segments, [0, 1];
+                         // BoardDetector replaces it by the edge evidence share (quad_refine.h)
 };
 
 // Quad::lines of a side that no line found: completed from its neighbours (detect_quads).

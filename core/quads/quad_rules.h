@@ -27,7 +27,7 @@ enum class Contrast : uint8_t {
 };
 
 // Tolerances of the five rules, every one with its unit. The defaults admit a board tilted up
-// to 40° out of the image plane and turned up to 30° in it (docs in README, "Quadrangles").
+// to 40° out of the image plane and turned up to 30° in it (docs/quadrangles.md).
 struct QuadParams {
     // Rule 1: opposite sides almost parallel — largest angle between them, degrees.
     angle_t parallel_tolerance = angle_from_deg(34);

@@ -15,8 +15,7 @@ std::string detect_usage() {
            "  or - for standard input. A frame larger than " +
            std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
            " pixels is binned to fit (--bin).\n"
-           "  Prints one JSON object on stdout (see docs/cli.md and README, \"quadtrack "
-           "detect\").\n"
+           "  Prints one JSON object on stdout (see docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
            options_help();
 }

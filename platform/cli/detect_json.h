@@ -1,4 +1,4 @@
-// The one definition of `quadtrack detect`'s JSON (see README, "quadtrack detect"), written on
+// The one definition of `quadtrack detect`'s JSON (see docs/cli.md), written on
 // one line so a sequence of frames is JSON Lines:
 //   {"width":W,"height":H,"bin":N,"status":"ok",
 //    "lines":[{"x1":..,"y1":..,"x2":..,"y2":..,"rho":..,"theta_deg":..}, ...],
@@ -9,10 +9,11 @@
 // Pixels with the origin at the centre of pixel (0, 0), x right, y down; rho >= 0 and
 // theta_deg in [0, 360) the direction of the line's normal from the origin (y down: clockwise
 // on screen); corners anti-clockwise as seen, the first with the smallest x + y (top-left);
-// score = covered share of the perimeter, 0..1; display_homography maps display pixels
+// score = share of the perimeter with edge evidence of each side's polarity (quad_refine.h),
+// 0..1; display_homography maps display pixels
 // (u, v, 1) onto image pixels (x·w, y·w, w), or is null when it cannot be represented.
 //
-// `quadtrack track` writes one line per frame with the same pieces (README, "quadtrack track"):
+// `quadtrack track` writes one line per frame with the same pieces (docs/cli.md):
 //   {"frame":K,"width":W,"height":H,"bin":N,"status":"ok","state":"none"|"started"|"tracking",
 //    "track_id":N,
 //    "quad":{"corners":[[x,y],[x,y],[x,y],[x,y]],"source":["detected"|"predicted", x4],

@@ -15,9 +15,8 @@ std::string homography_usage() {
     return "usage: quadtrack homography A B [OPTIONS]\n"
            "  A and B are PGM/PPM/Y4M frames (the first frame of a Y4M); either may be - for\n"
            "  standard input. Frames larger than 640 x 480 pixels are binned to fit (--bin).\n"
-           "  Prints {\"H\",\"inliers\",\"matches\",...}: H maps A's pixels into B (see "
-           "docs/cli.md\n"
-           "  and README, \"quadtrack homography\").\n"
+           "  Prints {\"H\",\"inliers\",\"matches\",...}: H maps A's pixels into B (see\n"
+           "  docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
            target_options_help(GeometryCommand::homography);
 }

@@ -18,8 +18,7 @@ std::string target_usage() {
            "  every frame the same size; frames larger than 640 x 480 pixels are binned to fit\n"
            "  (--bin). The target is the box X,Y,W,H of frame 0 (input pixels; at most 24 x 24\n"
            "  once binned); one JSON line per frame {\"frame\",\"x\",\"y\",\"state\",...}\n"
-           "  (see docs/cli.md and README, \"quadtrack target\"); x, y may lie outside the image\n"
-           "  while the target is out of view.\n"
+           "  (see docs/cli.md); x, y may lie outside the image while the target is out of view.\n"
            "options (--name VALUE or --name=VALUE):\n" +
            target_options_help(GeometryCommand::target);
 }

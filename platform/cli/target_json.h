@@ -1,5 +1,5 @@
-// The one definition of the JSON of `quadtrack homography` and `quadtrack target` (README,
-// "quadtrack homography" and "quadtrack target"), each written on one line:
+// The one definition of the JSON of `quadtrack homography` and `quadtrack target`
+// (docs/cli.md), each written on one line:
 //   homography: {"H":[[h1,h2,h3],[h4,h5,h6],[h7,h8,1]]|null,"inliers":N,"matches":M,
 //                "status":"ok"|"too_few_pairs"|"degenerate"|"no_consensus",
 //                "reprojection_px":E,"features":[NA,NB],"bin":[BA,BB]}

@@ -20,8 +20,7 @@ std::string track_usage() {
            " pixels are binned to fit (--bin).\n"
            "  Each frame is detected as by quadtrack detect, then the quadrangle tracker carries "
            "the\n"
-           "  board: one JSON line per frame on stdout (see docs/cli.md and README, \"quadtrack "
-           "track\").\n"
+           "  board: one JSON line per frame on stdout (see docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
            options_help(Command::track);
 }

@@ -8,7 +8,7 @@
 //
 // Prints, per case, between "=== chain NAME" and "=== end NAME" lines, the result text of
 // core/api/result_text.h exactly as the host writes vectors/scenes/NAME.chain.txt: the ctest
-// compares the two byte for byte (compare_chain.cmake). Then the budgets: instructions per
+// compares the two byte for byte (run_qemu.cmake). Then the budgets: instructions per
 // frame and stage, the worst frame of each case, flash, RAM and stack. Exit status 0 unless a
 // frame could not be run or the PGM parser failed its checks.
 //

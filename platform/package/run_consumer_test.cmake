@@ -1,4 +1,4 @@
-# The ctests package_consumer and package_consumer_m4 (registered by package_test.cmake):
+# The ctests package_consumer and package_consumer_cortex-m4/-m3 (registered by package_test.cmake):
 # installs the core component of BUILD_DIR into a fresh prefix, checks what was installed,
 # configures and builds this directory's consumer against it with CMAKE_PREFIX_PATH only, and
 # when RUN is true runs the consumer (through EMULATOR when cross-compiled), which must exit 0.

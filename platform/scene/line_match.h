@@ -1,5 +1,5 @@
 // Scoring detected lines against a scene's ground truth (host side, double precision): the
-// acceptance rule of the lines stage and the accuracy table of the README.
+// acceptance rule of the lines stage and the accuracy table of bash bench.sh lines-host.
 #pragma once
 #include <vector>
 

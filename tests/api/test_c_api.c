@@ -295,8 +295,8 @@ static void test_config_applied(const qt_config* defaults) {
     }
 }
 
-/* Defaults as documented (line_detector.h, hough.h, quad_rules.h, quad_tracker.h, README
- * "Tracking"), and the range of every field. */
+/* Defaults as documented (line_detector.h, hough.h, quad_rules.h, quad_tracker.h,
+ * docs/tracking.md), and the range of every field. */
 static void test_config(void) {
     qt_config cfg, bad;
     qt_config_default(&cfg, W, H);

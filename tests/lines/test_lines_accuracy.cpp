@@ -1,6 +1,6 @@
 // Accuracy of the lines stage on generated scenes with known geometry (fixed seeds): truth
 // segments of at least 2 × min_line_length found within 1° and 2 px at each end, at Gaussian
-// noise σ = 5 grey levels. The README's table (bash bench.sh lines-host) runs more scenes.
+// noise σ = 5 grey levels. The bench's table (bash bench.sh lines-host) runs more scenes.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -50,7 +50,7 @@ scene::SceneOptions noisy(uint64_t seed) {
 
 TEST_CASE("polygon edges at noise 5: every side found, no false positives", "[accuracy]") {
     // Quadrangles and triangles with corners of 60° or more (board-like), then with corners of
-    // any angle. The README's table (bash bench.sh lines-host --scenes 1000) runs seeds 1..1000
+    // any angle. The bench's table (bash bench.sh lines-host --scenes 1000) runs seeds 1..1000
     // of both kinds; these are others.
     for (const double min_corner_deg : {60.0, 0.0}) {
         Totals t;

@@ -8,7 +8,7 @@
 // camera motion (TargetTracker::expected()), widened by capture_margin_px for the difference
 // between that guess and the frame's measured homography; the search window, known only once
 // the homography is, is clipped to it. RAM is the members below (sizeof(TargetPipelineQvga)
-// is printed by the firmware and quoted in the README). No heap, no exceptions.
+// is printed by bash bench.sh target-host, docs/target.md). No heap, no exceptions.
 #pragma once
 #include <stdint.h>
 
