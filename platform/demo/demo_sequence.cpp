@@ -67,17 +67,21 @@ bool track_board_sequence(const scene::BoardMotionSpec& spec, int width, int hei
                           const QuadTrackerParams& params, std::vector<BoardTrackFrame>& out,
                           std::string& error) {
     out.clear();
+    const uint8_t bin = choose_bin(width, height, 0, error);
+    if (bin == 0) return false;
     QuadTracker tracker(params);
     for (int f = 0; f < spec.frames; ++f) {
         const scene::BoardSequenceFrame d = scene::sized_sequence_frame(spec, f, width, height);
         DetectResult r;
-        if (!detect_board(d.image, BoardParams{}, r)) {
+        if (!detect_board(d.image, BoardParams{}, r, bin)) {
             error = "frame " + std::to_string(f) + ": " + status_name(r.status);
             return false;
         }
         BoardTrackFrame k;
         k.quad = tracker.step(r.lines.data(), static_cast<uint16_t>(r.lines.size()), r.quads.data(),
                               static_cast<uint16_t>(r.quads.size()));
+        to_input_pixels(r, width, height);
+        to_input_pixels(k.quad, bin);
         k.lost = tracker.stats().lost_reason;
         k.taken_back = tracker.stats().taken_back;
         if (k.quad.state != TrackState::none)
@@ -94,7 +98,7 @@ bool run_demo_sequence(const std::string& out_dir) {
         "board sequence: %d frames 640x480, the board turning 2.5 deg and moving 6.3 px a frame; "
         "in frames "
         "%d-%d dark bars hide its top and bottom sides.\n"
-        "  tracked with the turn model (quadtrack track --model turn) and, for comparison, the "
+        "  tracked with the turn model (quadtrack track's default) and, for comparison, the "
         "paper's 3KF "
         "(--model paper); pictures and sides are the turn model's\n"
         "  pictures: lines (red), detected sides (solid green), predicted sides (dashed orange), "

@@ -1,7 +1,7 @@
 // The demo's board sequence (platform/scene/board_sequence.h) detected and tracked
 // (core/tracking/quad_tracker.h) frame by frame, each frame written as an overlay picture with a
 // one-line summary on stdout; and the run behind it, shared with the tests and benches: any
-// board sequence at any size up to 640 × 480, one tracker, corner errors against the truth.
+// board sequence at any camera size, one tracker, corner errors against the truth.
 #pragma once
 #include <string>
 #include <vector>
@@ -33,9 +33,11 @@ double worst_corner_error(const TrackedQuad& t, const scene::BoardScene& truth);
 // BoardParams{}' shape limits, and `model`.
 QuadTrackerParams demo_tracker_params(LineModel model, uint16_t width, uint16_t height);
 
-// Frames 0 .. spec.frames − 1 of scene::sized_sequence_frame(spec, f, width, height), detected
-// with BoardParams{} and tracked with `params`. Returns false with one line in `error` when a
-// frame cannot be detected (larger than 640 × 480, or an error status).
+// Frames 0 .. spec.frames − 1 of scene::sized_sequence_frame(spec, f, width, height), binned
+// as `quadtrack track` bins them (choose_bin's automatic factor N), detected with BoardParams{}
+// and tracked with `params` (sized for the binned frame, ⌊width/N⌋ × ⌊height/N⌋); corners and
+// lines in the input's pixels. Returns false with one line in `error` when no factor fits or a
+// frame cannot be detected (an error status).
 bool track_board_sequence(const scene::BoardMotionSpec& spec, int width, int height,
                           const QuadTrackerParams& params, std::vector<BoardTrackFrame>& out,
                           std::string& error);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -41,8 +42,9 @@ std::string write_with(const std::function<bool(std::FILE*, std::string&)>& body
     std::FILE* f = std::tmpfile();
     REQUIRE(f);
     std::string error;
+    const bool ok = body(f, error);
     INFO(error);
-    REQUIRE(body(f, error));
+    REQUIRE(ok);
     std::rewind(f);
     std::string s;
     char buf[65536];

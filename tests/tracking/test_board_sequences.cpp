@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_options.h"
 #include "demo/demo_sequence.h"
 #include "scene/board_sequence.h"
 
@@ -18,9 +19,10 @@ namespace {
 std::vector<cli::BoardTrackFrame> run(const scene::BoardMotionSpec& spec, LineModel model) {
     std::vector<cli::BoardTrackFrame> frames;
     std::string error;
+    const bool ok = cli::track_board_sequence(
+        spec, 640, 480, cli::demo_tracker_params(model, 640, 480), frames, error);
     INFO(error);
-    REQUIRE(cli::track_board_sequence(spec, 640, 480, cli::demo_tracker_params(model, 640, 480),
-                                      frames, error));
+    REQUIRE(ok);
     REQUIRE(frames.size() == static_cast<size_t>(spec.frames));
     return frames;
 }
@@ -68,8 +70,8 @@ TEST_CASE(
     "[board_sequence][take_back]") {
     // Frame 8 is the first with a whole detection after the bars (frames 5-7).
     const int first_whole = scene::kLastHiddenFrame + 1;
-    SECTION("the default model: within 1 px from the first whole frame on") {
-        const LineModel model = default_quad_tracker_params(640, 480).lines.model;
+    SECTION("quadtrack track's default model: within 1 px from the first whole frame on") {
+        const LineModel model = cli::TrackOptions().model;
         check_run(run(scene::kDemoSequence, model), first_whole, 0, 1.0);
     }
     SECTION("the paper's 3KF: the bottom side taken back within one frame, then within 1 px") {
