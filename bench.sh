@@ -24,7 +24,7 @@
 #   streams-host   the board sequences (demo, turning) at 640x480, 768x576, 1280x720 and 1920x1080,
 #                  binned as quadtrack track bins them, with each line model: corner errors while
 #                  sides are hidden and after; and a 1280x720 clip through ffmpeg and GStreamer
-#                  pipes into quadtrack track -
+#                  pipes into quadtrack track -, and OpenCV's vtest.avi (768x576) through ffmpeg
 #   target-host    the filtering-geometry paper's comparison on generated airborne sequences:
 #                  template only, filter only, homography only, fused (with and without Table
 #                  III's reset); error tables and SVG charts in bench_out/target
@@ -91,6 +91,14 @@ stream_pipes() {
         ! video/x-raw,format=Y42B ! y4menc ! fdsink fd=1 | "$q" track - >"$d/gst.jsonl" || status=$?
     python3 platform/bench/corner_errors.py "gst-launch-1.0 ... y4menc" \
         "$d/truth.jsonl" "$d/gst.jsonl" "$status"
+    # A camera-size clip a user has at hand: a street, no board, so no errors to measure.
+    status=0
+    ffmpeg -loglevel error -i /usr/share/doc/opencv-doc/examples/data/vtest.avi \
+        -f yuv4mpegpipe -pix_fmt gray - | "$q" track - >"$d/vtest.jsonl" || status=$?
+    echo
+    echo "OpenCV's vtest.avi (opencv-doc, 768x576) through ffmpeg: $(wc -l <"$d/vtest.jsonl") lines," \
+        "bin $(grep -o '"bin":[0-9]*' "$d/vtest.jsonl" | sort -u | cut -d: -f2 | paste -sd,)," \
+        "exit status $status"
     rm -rf "$d"
 }
 
@@ -120,7 +128,8 @@ run_bench() {
             host_build bench_track
             "$b/bench_track" --out bench_out/track ;;
         streams-host)
-            ensure_packages ffmpeg gstreamer1.0-tools gstreamer1.0-plugins-good gstreamer1.0-libav
+            ensure_packages ffmpeg gstreamer1.0-tools gstreamer1.0-plugins-good gstreamer1.0-libav \
+                opencv-doc
             host_build bench_streams quadtrack qt_board_y4m
             "$b/bench_streams"
             stream_pipes ;;
