@@ -323,6 +323,7 @@ const FlagTable<DetectOptions, Command>& table() {
 
 TrackOptions::TrackOptions() {
     const QuadTrackerParams d;
+    model = d.lines.model;
     filters = d.lines.filters;
     gate_angle = d.gate_angle;
     gate_distance = d.gate_distance;

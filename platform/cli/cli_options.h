@@ -19,11 +19,8 @@ enum class Command { detect, track };
 
 // The QuadTrackerParams a user sets (the rest follows the frame size, see run_track).
 struct TrackOptions {
-    // turn, not core's default (the paper's 3KF): on the board sequences, bars over sides while
-    // the board turns, its worst corner error is under 1 px where 3KF's is 8-33 px, and no worse
-    // elsewhere (bash bench.sh streams-host, track-host; docs/tracking.md, "the default model").
-    LineModel model = LineModel::turn;
-    uint8_t filters = 3;     // closest_points filters, 1..3
+    LineModel model = LineModel::closest_points;  // core's default (see the constructor)
+    uint8_t filters = 3;                          // closest_points filters, 1..3
     angle_t gate_angle = 0;  // defaults from QuadTrackerParams (see the constructor)
     q16_16 gate_distance = {};
     uint8_t max_predicted = 0;

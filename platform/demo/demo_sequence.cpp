@@ -98,7 +98,7 @@ bool run_demo_sequence(const std::string& out_dir) {
         "board sequence: %d frames 640x480, the board turning 2.5 deg and moving 6.3 px a frame; "
         "in frames "
         "%d-%d dark bars hide its top and bottom sides.\n"
-        "  tracked with the turn model (quadtrack track's default) and, for comparison, the "
+        "  tracked with the turn model (quadtrack track --model turn) and, for comparison, the "
         "paper's 3KF "
         "(--model paper); pictures and sides are the turn model's\n"
         "  pictures: lines (red), detected sides (solid green), predicted sides (dashed orange), "

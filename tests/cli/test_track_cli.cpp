@@ -109,7 +109,7 @@ TEST_CASE("track carries the board through frames where its top and bottom sides
     // Corner i of the JSON (anti-clockwise: TL, BL, BR, TR) is the generator's corner truth_of[i].
     const int truth_of[4] = {0, 3, 2, 1};
     for (const std::vector<std::string>& model :
-         {std::vector<std::string>{}, std::vector<std::string>{"--model", "paper"},
+         {std::vector<std::string>{}, std::vector<std::string>{"--model", "turn"},
           std::vector<std::string>{"--model=paper", "--filters", "2"}}) {
         std::vector<std::string> args = {pattern};
         args.insert(args.end(), model.begin(), model.end());
@@ -210,7 +210,7 @@ TEST_CASE("track --help lists the tracker's options; detect does not take them",
     for (const char* name : {"--model paper|turn", "--filters", "--gate-angle", "--gate-distance",
                              "--max-predicted", "--threshold", "--min-line-length", "--display"})
         CHECK(help.out.find(name) != std::string::npos);
-    CHECK(help.out.find("(default turn)") != std::string::npos);
+    CHECK(help.out.find("(default paper)") != std::string::npos);
     CHECK(help.out.find("(default 3)") != std::string::npos);
     std::FILE* out = std::tmpfile();
     std::FILE* err = std::tmpfile();
