@@ -29,6 +29,10 @@
 #   track-host     line tracker on the paper's synthetic translations and rotations: overlap
 #                  tables for 1KF, 2KF, 3KF and the turn model, Experiment 1 with varying
 #                  lengths and noise, SVG charts in bench_out/track
+#   streams-host   the board sequences (demo, turning) at 640x480, 768x576, 1280x720 and 1920x1080,
+#                  binned as quadtrack track bins them, with each line model: corner errors while
+#                  sides are hidden and after; and a 1280x720 clip through ffmpeg and GStreamer
+#                  pipes into quadtrack track -, and OpenCV's vtest.avi (768x576) through ffmpeg
 #   target-host    the filtering-geometry paper's comparison on generated airborne sequences:
 #                  template only, filter only, homography only, fused (with and without Table
 #                  III's reset), the paper's version of each of the project's choices (D_rep,
@@ -51,7 +55,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host homography-host target-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table track-m4 hdl-latency hdl-soak fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table track-m4 hdl-latency hdl-soak fpga fuzz)
 
 # The host benches compare with OpenCV in the same run: its development packages are installed
 # here (never by the test command; the runtime never links it), and the configure step fails
@@ -92,6 +96,39 @@ budget_table() {
         --elves Cortex-M3=build/cortex-m3/platform/firmware
 }
 
+# The board sequence at 1280 x 720 (qt_board_y4m) encoded to H.264, then decoded by ffmpeg and
+# by GStreamer into `quadtrack track -` as a user's pipe would: one table row per pipe.
+stream_pipes() {
+    local d q=build/host/platform/cli/quadtrack y=build/host/platform/scene/qt_board_y4m status
+    d=$(mktemp -d)
+    "$y" --size 1280x720 --colour 420 --truth "$d/truth.jsonl" |
+        ffmpeg -loglevel error -f yuv4mpegpipe -i - -c:v libx264 -crf 18 -pix_fmt yuv420p "$d/clip.mp4"
+    echo "A 1280x720 H.264 clip of the demo's board sequence through a pipe into quadtrack track -;"
+    echo "worst and mean corner error over the frames, camera px."
+    echo
+    echo "| pipe | lines | bin | worst | mean | exit status |"
+    echo "|---|---:|---:|---:|---:|---:|"
+    status=0
+    ffmpeg -loglevel error -i "$d/clip.mp4" -f yuv4mpegpipe -pix_fmt gray - |
+        "$q" track - >"$d/ffmpeg.jsonl" || status=$?
+    python3 platform/bench/corner_errors.py "ffmpeg -f yuv4mpegpipe -pix_fmt gray" \
+        "$d/truth.jsonl" "$d/ffmpeg.jsonl" "$status"
+    status=0
+    gst-launch-1.0 -q filesrc location="$d/clip.mp4" ! decodebin ! videoconvert \
+        ! video/x-raw,format=Y42B ! y4menc ! fdsink fd=1 | "$q" track - >"$d/gst.jsonl" || status=$?
+    python3 platform/bench/corner_errors.py "gst-launch-1.0 ... y4menc" \
+        "$d/truth.jsonl" "$d/gst.jsonl" "$status"
+    # A camera-size clip a user has at hand: a street, no board, so no errors to measure.
+    status=0
+    ffmpeg -loglevel error -i /usr/share/doc/opencv-doc/examples/data/vtest.avi \
+        -f yuv4mpegpipe -pix_fmt gray - | "$q" track - >"$d/vtest.jsonl" || status=$?
+    echo
+    echo "OpenCV's vtest.avi (opencv-doc, 768x576) through ffmpeg: $(wc -l <"$d/vtest.jsonl") lines," \
+        "bin $(grep -o '"bin":[0-9]*' "$d/vtest.jsonl" | sort -u | cut -d: -f2 | paste -sd,)," \
+        "exit status $status"
+    rm -rf "$d"
+}
+
 # Runs one bench, printing its figures.
 run_bench() {
     local b=build/host/platform/bench
@@ -117,6 +154,12 @@ run_bench() {
         track-host)
             host_build bench_track
             "$b/bench_track" --out bench_out/track ;;
+        streams-host)
+            ensure_packages ffmpeg gstreamer1.0-tools gstreamer1.0-plugins-good gstreamer1.0-libav \
+                opencv-doc
+            host_build bench_streams quadtrack qt_board_y4m
+            "$b/bench_streams"
+            stream_pipes ;;
         homography-host)
             host_build bench_homography
             "$b/bench_homography" ;;
@@ -177,6 +220,7 @@ doc_of() {
         lines-host) echo docs/lines.md ;;
         quads-host|photos-host) echo docs/quadrangles.md ;;
         track-host|track-m4) echo docs/tracking.md ;;
+        streams-host) echo docs/cli.md ;;
         homography-host|target-host) echo docs/target.md ;;
         budgets|budgets-m3|budgets-m4f|target-m4f|budget-table) echo docs/firmware.md ;;
         soak|fuzz) echo docs/robustness.md ;;

@@ -1,5 +1,7 @@
 #include "tracking/line_tracker.h"
 
+#include "base/wide_mul.h"
+
 namespace qt {
 
 namespace {
@@ -129,6 +131,36 @@ uint8_t LineTracker::flags() const {
         sat = sat || offset_.flags() != 0;
     }
     return sat ? LineTrackerFlags::saturated : 0;
+}
+
+int64_t LineTracker::innovation_variance(Point16 p) const {
+    constexpr int64_t kMax = pow2(58);
+    int64_t v = 0;
+    if (params_.model == LineModel::closest_points) {
+        for (int i = 0; i < params_.filters; ++i) {
+            v = point_[i].axis_x().pp > v ? point_[i].axis_x().pp : v;
+            v = point_[i].axis_y().pp > v ? point_[i].axis_y().pp : v;
+        }
+        v = clamp64(v, 0, kMax) + (static_cast<int64_t>(params_.kalman.r.raw) << 16);
+    } else {
+        // (π/180)² with 40 fraction bits: round(3.0461742e-4 · 2^40), for deg² -> rad².
+        constexpr int64_t kRad2PerDeg2 = 334930395;
+        const SinCos n = sin_cos(angle_from_deg(angle_.pos));
+        const Point16 a = params_.turn.anchor;
+        // t = (p − a)·(−sin θ, cos θ): px along the line from the anchor's foot, q16_16. Each
+        // product is below 2^62 (|dx|, |dy| < 2^32, |sin|, |cos| <= 2^30 raw) and so is their
+        // difference, at most |(dx, dy)|·2^30.
+        const int64_t dx = static_cast<int64_t>(p.x.raw) - a.x.raw;
+        const int64_t dy = static_cast<int64_t>(p.y.raw) - a.y.raw;
+        const int64_t t =
+            clamp64(shr_round_half_away(dy * n.cos.raw - dx * n.sin.raw, 30), -pow2(28), pow2(28));
+        const int64_t lever2 = t * t;  // px², 32 fraction bits, <= 2^56
+        const int64_t angle = mul_shr_round(angle_.pp, kRad2PerDeg2, 40);  // rad², 32 bits
+        v = clamp64(offset_.cov()[0], 0, kMax) +
+            clamp64(mul_shr_round(lever2, angle, 32), 0, kMax) +
+            (static_cast<int64_t>(params_.turn.r_offset.raw) << 16);
+    }
+    return v < kMax ? v : kMax;
 }
 
 Segment LineTracker::finish(angle_t theta, int64_t rho_raw) const {

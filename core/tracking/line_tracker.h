@@ -106,6 +106,14 @@ public:
     void update(const Segment& measured);
     Segment line() const;
     uint8_t flags() const;
+    // The variance of a measured line's distance from line() at the point p (px, on or near
+    // the line): the estimate's variance across the line there plus the measurement's, px²
+    // with 32 fraction bits, at most 2^58 (σ = 2^13 px). closest_points: the filters' largest
+    // position variance plus r (the filters are predicted and updated together, so their
+    // points are known equally well, and the fitted line as well as each of them). turn: the
+    // offset's variance at the anchor plus the angle's times the squared distance, along the
+    // line, of p from the anchor's foot (lever at most 4096 px), plus r_offset.
+    int64_t innovation_variance(Point16 p) const;
 
     // Read-only views of the filters, for checking their covariances (tests, soak runs):
     // closest_points uses point_filter(0 .. params().filters − 1), turn the other two.

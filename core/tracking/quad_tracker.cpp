@@ -41,22 +41,44 @@ Segment side_segment(const Segment& line, Point16 a, Point16 b) {
     return s;
 }
 
+// Side bits in the tracker's order -> the same bits in detect's order, whose side 0 is the
+// tracker's side `first`.
+uint8_t turn_bits(uint8_t bits, int first) {
+    uint8_t out = 0;
+    for (int i = 0; i < 4; ++i)
+        if (bits & (1u << ((first + i) % 4))) out = static_cast<uint8_t>(out | (1u << i));
+    return out;
+}
+
 // Fills out's corners, sides and detected bits from the tracker's side order, turned so that
-// corner 0 has the smallest x + y (detect's contract).
-void emit(const Segment lines[4], const Point16 corners[4], uint8_t detected, TrackedQuad& out) {
+// corner 0 has the smallest x + y (detect's contract). Returns the tracker's side that became
+// side 0.
+int emit(const Segment lines[4], const Point16 corners[4], uint8_t detected, TrackedQuad& out) {
     int first = 0;
     for (int i = 1; i < 4; ++i) {
         const int64_t s = static_cast<int64_t>(corners[i].x.raw) + corners[i].y.raw;
         const int64_t f = static_cast<int64_t>(corners[first].x.raw) + corners[first].y.raw;
         if (s < f) first = i;
     }
-    out.detected = 0;
     for (int i = 0; i < 4; ++i) {
         const int k = (first + i) % 4;
         out.corners[i] = corners[k];
         out.sides[i] = side_segment(lines[k], corners[k], corners[(k + 1) % 4]);
-        if (detected & (1u << k)) out.detected = static_cast<uint8_t>(out.detected | (1u << i));
     }
+    out.detected = turn_bits(detected, first);
+    return first;
+}
+
+// |a − b| <= tolerance · b for lengths a, b >= 0 (px) and a fraction tolerance.
+bool length_within(q16_16 a, q16_16 b, q16_16 tolerance) {
+    // |a − b| < 2^32 and b < 2^31 raw, tolerance <= 2^16 raw (one): both sides below 2^48.
+    const int64_t diff = abs64(static_cast<int64_t>(a.raw) - b.raw);
+    return diff * q16_16::one_raw <= static_cast<int64_t>(tolerance.raw) * b.raw;
+}
+
+// The side lengths of a quadrangle: side i from corner i to corner i + 1, px.
+void side_lengths(const Point16 corners[4], q16_16 lengths[4]) {
+    for (int i = 0; i < 4; ++i) lengths[i] = distance(corners[i], corners[(i + 1) % 4]);
 }
 
 }  // namespace
@@ -103,6 +125,70 @@ void QuadTracker::reset() {
     stats_ = QuadTrackStats{};
 }
 
+bool QuadTracker::gated(const Segment& s, const Segment& predicted) const {
+    if (orientation_diff(s.theta, predicted.theta) > params_.gate_angle) return false;
+    const SinCos normal = sin_cos(predicted.theta);
+    const int64_t gate = params_.gate_distance.raw;
+    if (abs64(signed_distance(predicted, normal, s.x1.raw, s.y1.raw)) > gate ||
+        abs64(signed_distance(predicted, normal, s.x2.raw, s.y2.raw)) > gate)
+        return false;
+    return same_polarity(s, predicted);
+}
+
+bool QuadTracker::within_reach(int side, const Segment& predicted, const Segment& s) const {
+    const SinCos normal = sin_cos(predicted.theta);
+    const int64_t k = params_.take_back_sigmas < 1   ? 1
+                      : params_.take_back_sigmas > 8 ? 8
+                                                     : params_.take_back_sigmas;
+    const Point16 ends[2] = {{s.x1, s.y1}, {s.x2, s.y2}};
+    for (const Point16& e : ends) {
+        // d² <= k²·S, both px² with 32 fraction bits: d held to 4096 px (d² <= 2^56) and S to
+        // 2^24 px² (2^56 raw), so k²·S <= 2^62 for k <= 8.
+        const int64_t d =
+            clamp64(abs64(signed_distance(predicted, normal, e.x.raw, e.y.raw)), 0, pow2(28));
+        const int64_t var = clamp64(sides_[side].innovation_variance(e), 0, pow2(56));
+        if (d * d > k * k * var) return false;
+    }
+    return true;
+}
+
+uint8_t QuadTracker::take_back(const Segment* lines, uint16_t n, const Quad& quad,
+                               const Segment predicted[4], uint8_t detected, uint32_t used[8]) {
+    q16_16 lengths[4];
+    side_lengths(quad.corners, lengths);
+    // The detection's side i + shift is the track's side i (both wind anti-clockwise): every
+    // matched side's counterpart passes that side's gate, and every side of the detection has
+    // the length the track had when it last saw all four sides.
+    for (int shift = 0; shift < 4; ++shift) {
+        bool agrees = true;
+        for (int i = 0; i < 4 && agrees; ++i) {
+            const int k = (i + shift) % 4;
+            agrees = quad.lines[k] < n &&
+                     length_within(lengths[k], whole_lengths_[i], params_.take_back_length) &&
+                     (!(detected & (1u << i)) || gated(lines[quad.lines[k]], predicted[i]));
+        }
+        if (!agrees) continue;
+        // Each unmatched side's counterpart within its filters' reach, and a line no side took.
+        for (int i = 0; i < 4 && agrees; ++i) {
+            const uint8_t j = quad.lines[(i + shift) % 4];
+            agrees = (detected & (1u << i)) || (!(used[j / 32] & (1u << (j % 32))) &&
+                                                within_reach(i, predicted[i], lines[j]));
+        }
+        if (!agrees) return 0;
+        uint8_t taken = 0;
+        for (int i = 0; i < 4; ++i) {
+            const uint8_t j = quad.lines[(i + shift) % 4];
+            if (detected & (1u << i)) continue;
+            used[j / 32] |= 1u << (j % 32);
+            sides_[i].update(lines[j]);
+            missed_[i] = 0;
+            taken = static_cast<uint8_t>(taken | (1u << i));
+        }
+        return taken;
+    }
+    return 0;
+}
+
 TrackedQuad QuadTracker::start(const Segment* lines, const Quad& quad) {
     Segment sides[4];
     for (int i = 0; i < 4; ++i) {
@@ -110,6 +196,7 @@ TrackedQuad QuadTracker::start(const Segment* lines, const Quad& quad) {
         sides_[i].init(sides[i], params_.lines);
         missed_[i] = 0;
     }
+    side_lengths(quad.corners, whole_lengths_);
     active_ = true;
     age_ = 0;
     ++track_id_;
@@ -139,20 +226,13 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
             // frame without lines leaves every side unmatched (and counted in missed_).
             uint32_t used[8] = {};  // bit set of line indices < 256
             for (int i = 0; i < 4; ++i) {
-                const SinCos normal = sin_cos(predicted[i].theta);
                 const Point16 a = corners[i], b = corners[(i + 1) % 4];
                 int best = -1;
                 q16_16 best_len{0};
                 for (uint16_t j = 0; j < n && j < 256; ++j) {
                     if (used[j / 32] & (1u << (j % 32))) continue;
                     const Segment& s = lines[j];
-                    if (orientation_diff(s.theta, predicted[i].theta) > params_.gate_angle)
-                        continue;
-                    const int64_t gate = params_.gate_distance.raw;
-                    if (abs64(signed_distance(predicted[i], normal, s.x1.raw, s.y1.raw)) > gate ||
-                        abs64(signed_distance(predicted[i], normal, s.x2.raw, s.y2.raw)) > gate)
-                        continue;
-                    if (!same_polarity(s, predicted[i])) continue;
+                    if (!gated(s, predicted[i])) continue;
                     if (side_overlap(a, b, s).raw <= 0) continue;
                     const q16_16 len = distance(Point16{s.x1, s.y1}, Point16{s.x2, s.y2});
                     if (best < 0 || len.raw > best_len.raw) {
@@ -169,6 +249,14 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
                     ++missed_[i];
                 }
             }
+            // A side predicted off the line the detector sees is taken back from a whole
+            // detection that agrees with the matched sides (see the top of quad_tracker.h).
+            const uint8_t matched = detected;
+            uint8_t taken = 0;
+            if (params_.take_back && matched != 0 && matched != 0x0F && quad_count > 0 && n > 0) {
+                taken = take_back(lines, n, quads[0], predicted, matched, used);
+                detected = static_cast<uint8_t>(matched | taken);
+            }
             Segment current[4];
             for (int i = 0; i < 4; ++i) {
                 current[i] = sides_[i].line();
@@ -182,7 +270,9 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
                 out.state = TrackState::tracking;
                 out.track_id = track_id_;
                 out.age = age_ + 1;
-                emit(current, corners, detected, out);
+                const int first = emit(current, corners, detected, out);
+                stats_.taken_back = turn_bits(taken, first);
+                if (matched == 0x0F) side_lengths(corners, whole_lengths_);
                 // No side found near its prediction while the detector sees a whole quadrangle
                 // elsewhere: the board moved past the gate; trust the detection. With some
                 // sides matched the track is anchored, and a disagreeing detection is more

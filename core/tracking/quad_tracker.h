@@ -12,6 +12,22 @@
 //      are known, and overlapping the predicted side's extent — choosing the longest such line;
 //      a line serves one side at most. Matched sides are updated ("detected"), the others keep
 //      their prediction ("predicted"). The corners are the crossings of consecutive sides.
+//   2b. Taking a lost side back. A predicted side can drift beyond the gate from the line the
+//      detector sees (the paper's constant-velocity model on a board turning 2.5°/frame: 12 px
+//      after three hidden frames of the demo), and would then stay predicted until the track
+//      is lost. When at least one side matched and one did not, the unmatched sides take their
+//      lines from this frame's best detected quadrangle (the filters are updated, as by a
+//      match: not restarted; the track id stays) if all of these hold:
+//        - every matched side's counterpart in the detection (both wind anti-clockwise, so the
+//          correspondence is a cyclic shift) passes that side's gate: the detection is the
+//          tracked board, not another one;
+//        - each of the detection's four sides is within take_back_length (1/16) of that side's
+//          length when the track last matched all four: the board's shape, which a line
+//          standing in for a hidden side (an occluder's edge across the board) changes;
+//        - both ends of each line taken lie within take_back_sigmas (3) standard deviations of
+//          the side's prediction (LineTracker::innovation_variance): a side is only taken as
+//          far as its own filters say it may have drifted.
+//      QuadTrackStats::taken_back says which sides were taken.
 //   3. The track is LOST, and step() restarts from 1 in the same frame, when any side has gone
 //      unmatched for more than max_predicted frames in a row, when the four sides no longer
 //      make a convex quadrangle whose sides are within QuadParams' side lengths, when a
@@ -19,10 +35,8 @@
 //      has a corner more than gate_distance from the tracked one (the board moved faster than
 //      the gate). A stated rule rather than a confidence: it bounds how long the output can be
 //      pure extrapolation, max_predicted frames. With some sides matched a disagreeing
-//      detection is not trusted: it is too often the matched sides plus an occluder's edges.
-//      The price: a predicted side that has drifted more than the gate from its line is not
-//      picked up again until the track is lost (the paper's constant-velocity model on a
-//      board turning 2.5°/frame, see the demo).
+//      detection is not trusted as a whole: it is too often the matched sides plus an
+//      occluder's edges (rule 2b says when one of its sides is taken all the same).
 //
 // Output corners follow detect's contract: anti-clockwise as seen, corner 0 with the smallest
 // x + y, side i from corner i to corner i + 1; the per-side flags follow the same order.
@@ -46,6 +60,17 @@ struct QuadTrackerParams {
     q16_16 gate_distance = q16_16::from_int(12);
     // A side may be predicted this many frames in a row before the track is dropped.
     uint8_t max_predicted = 15;
+    // Taking a lost side back (see the top of the file): on or off, and the largest relative
+    // difference between a side of the detection and the same side when the track last matched
+    // all four, fraction of the latter. 1/16: a hand-held board's sides change length by a % or
+    // two a frame as it tilts or nears, while an occluder whose edge stands in for a side (the
+    // demo's bars reach 24 px into a board 200 px tall) shortens the sides next to it by more.
+    // The taken line must also lie within take_back_sigmas standard deviations of the side's
+    // prediction (LineTracker::innovation_variance at each of its ends): a side is only taken
+    // back as far as its filters say it may have drifted. Range 1..8.
+    bool take_back = true;
+    q16_16 take_back_length = q16_16::from_ratio(1, 16);
+    uint8_t take_back_sigmas = 3;
     // Shape limits of the rebuilt quadrangle (side lengths; the other rules are detection's).
     QuadParams shape;
 };
@@ -83,6 +108,7 @@ enum class QuadTrackLost : uint8_t {
 // What the last step() did, for tuning and for the JSON.
 struct QuadTrackStats {
     QuadTrackLost lost_reason = QuadTrackLost::none;  // of the track that ended this frame
+    uint8_t taken_back = 0;  // bit i: side i (detect's order) was taken back this frame
 };
 
 // The JSON name of a reason ("side_unseen", "shape", "saturated", "detection_disagrees"), or
@@ -113,10 +139,20 @@ public:
 private:
     TrackedQuad start(const Segment* lines, const Quad& quad);
     bool agrees(const TrackedQuad& tracked, const Quad& detected) const;
+    // The association gate: `s` may be the side whose prediction is `predicted`.
+    bool gated(const Segment& s, const Segment& predicted) const;
+    // Both ends of `s` within take_back_sigmas standard deviations of side `side`'s prediction.
+    bool within_reach(int side, const Segment& predicted, const Segment& s) const;
+    // Takes the unmatched sides back from `quad` when it agrees with the matched ones
+    // (`detected` bits, tracker order); marks the lines it takes in `used`. Returns the bits of
+    // the sides taken.
+    uint8_t take_back(const Segment* lines, uint16_t n, const Quad& quad,
+                      const Segment predicted[4], uint8_t detected, uint32_t used[8]);
 
     QuadTrackerParams params_;
     LineTracker sides_[4];
     uint8_t missed_[4] = {0, 0, 0, 0};  // frames in a row each side went unmatched
+    q16_16 whole_lengths_[4] = {};      // side lengths when all four were last matched, px
     bool active_ = false;
     uint32_t track_id_ = 0;
     uint32_t age_ = 0;

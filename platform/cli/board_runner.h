@@ -1,30 +1,50 @@
 // One grey frame through core's detection chain on the host (CLI, demo, benches): rows are
-// pushed as a camera would, the results copied out. Uses one static VGA-capacity detector.
+// pushed as a camera would, through the binning stage when the frame is larger than the
+// detector, and the results copied out. Uses one static VGA-capacity detector.
 #pragma once
 #include <stdint.h>
 
+#include <string>
 #include <vector>
 
 #include "io/grey_image.h"
 #include "quads/board_detector.h"
+#include "tracking/quad_tracker.h"
 
 namespace qt::cli {
 
-// The CLI's detector: frames up to 640 × 480.
+// The CLI's detector: frames up to 640 × 480, larger ones binned to fit.
 using HostBoardDetector = BoardDetectorVga;
 constexpr int kMaxFrameWidth = 640, kMaxFrameHeight = 480;
 
 struct DetectResult {
-    Status status = Status::ok;  // of the chain (ok or capacity_exceeded when it ran)
-    uint16_t width = 0, height = 0;
-    std::vector<Segment> lines;  // clustered lines, ends joined at corners
-    std::vector<Quad> quads;     // best first
+    Status status = Status::ok;      // of the chain (ok or capacity_exceeded when it ran)
+    uint16_t width = 0, height = 0;  // the frame the coordinates below refer to, px
+    uint8_t bin = 1;                 // the input was binned by this factor (binning.h)
+    std::vector<Segment> lines;      // clustered lines, ends joined at corners
+    std::vector<Quad> quads;         // best first
     LineStats line_stats;
     QuadStats quad_stats;
 };
 
-// Runs the chain on `frame`. Returns false (with result.status saying why) on an error status;
-// capacity_exceeded still returns true with the results found.
-bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result);
+// Runs the chain on `frame` binned by `bin` (1: as it is): the result is in the binned frame's
+// pixels (width, height its size; to_input_pixels() maps it back). Returns false (with
+// result.status saying why) on an error status, bad_size when the binned frame is empty or
+// larger than 640 × 480; capacity_exceeded still returns true with the results found.
+bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
+                  uint8_t bin = 1);
+
+// The bin factor for a width × height frame: `requested` (1..kMaxBinFactor) when not 0,
+// otherwise the smallest that brings the frame within 640 × 480. Returns 0 with one line in
+// `error` when none does, or the requested one leaves the frame larger than that or empty.
+uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error);
+
+// A line in the binned frame's pixels -> the same line in the input's (x = N·u + (N − 1)/2):
+// end points and closest point mapped, theta kept unless rho's sign turns (rho >= 0 always).
+Segment to_input_pixels(const Segment& s, uint8_t bin);
+// Every coordinate of `result` in the input's pixels, width and height the input's (an input
+// width × height, binned by result.bin).
+void to_input_pixels(DetectResult& result, int input_width, int input_height);
+void to_input_pixels(TrackedQuad& quad, uint8_t bin);
 
 }  // namespace qt::cli

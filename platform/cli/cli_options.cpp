@@ -292,6 +292,8 @@ const FlagTable<DetectOptions, Command>& table() {
             integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1,
                               HostBoardDetector::max_quads(),
                               [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
+            bin_flag<DetectOptions, Command>([](DetectOptions& o) -> uint8_t& { return o.bin; },
+                                             Command::detect),
             // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
             track_only(
                 {"model", "paper|turn",

@@ -19,8 +19,8 @@ enum class Command { detect, track };
 
 // The QuadTrackerParams a user sets (the rest follows the frame size, see run_track).
 struct TrackOptions {
-    LineModel model = LineModel::closest_points;
-    uint8_t filters = 3;     // closest_points filters, 1..3
+    LineModel model = LineModel::closest_points;  // core's default (see the constructor)
+    uint8_t filters = 3;                          // closest_points filters, 1..3
     angle_t gate_angle = 0;  // defaults from QuadTrackerParams (see the constructor)
     q16_16 gate_distance = {};
     uint8_t max_predicted = 0;
@@ -32,7 +32,8 @@ struct DetectOptions {
     BoardParams params;
     uint16_t display_width = 1024, display_height = 768;  // display pixels (rule 5, homography)
     uint16_t max_quads = 4;                               // quadrangles reported, 1..4
-    TrackOptions track;                                   // track only
+    uint8_t bin = 0;  // binning factor of frames over 640 × 480, 1..16; 0: the smallest that fits
+    TrackOptions track;  // track only
 
     DetectOptions();  // params.quads.display_aspect follows the display size
 };

@@ -12,22 +12,17 @@ std::string detect_usage() {
     return "usage: quadtrack detect IMAGE [OPTIONS]\n"
            "  IMAGE is a PGM (P5), PPM (P6, converted to grey) or Y4M file (first frame's Y "
            "plane),\n"
-           "  at most " +
+           "  or - for standard input. A frame larger than " +
            std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
-           " pixels. Prints one JSON object on stdout (see docs/cli.md).\n"
+           " pixels is binned to fit (--bin).\n"
+           "  Prints one JSON object on stdout (see docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
            options_help();
 }
 
-bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, DetectResult& result,
-                  std::string& error) {
-    if (frame.width > kMaxFrameWidth || frame.height > kMaxFrameHeight) {
-        error = std::to_string(frame.width) + " x " + std::to_string(frame.height) +
-                " is over this build's capacity of " + std::to_string(kMaxFrameWidth) + " x " +
-                std::to_string(kMaxFrameHeight);
-        return false;
-    }
-    if (!detect_board(frame, options.params, result)) {
+bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, uint8_t bin,
+                  DetectResult& result, std::string& error) {
+    if (!detect_board(frame, options.params, result, bin)) {
         error = status_name(result.status);
         return false;
     }
@@ -47,11 +42,14 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         qt::io::print_error_line(err, "quadtrack detect: %s", error.c_str());
         return 1;
     }
+    const std::string name = io::input_name(path);
+    const uint8_t bin = choose_bin(frame.width, frame.height, options.bin, error);
     DetectResult result;
-    if (!detect_frame(frame, options, result, error)) {
-        qt::io::print_error_line(err, "quadtrack detect: %s: %s", path.c_str(), error.c_str());
+    if (bin == 0 || !detect_frame(frame, options, bin, result, error)) {
+        qt::io::print_error_line(err, "quadtrack detect: %s: %s", name.c_str(), error.c_str());
         return 1;
     }
+    to_input_pixels(result, frame.width, frame.height);
     std::fprintf(out, "%s\n",
                  detect_json(result, options.display_width, options.display_height).c_str());
     return 0;

@@ -9,11 +9,12 @@
 
 namespace qt::cli {
 
-// One frame through the detection chain as detect and track both run it: refuses frames over
-// the build's capacity, keeps the best options.max_quads quadrangles. On failure returns false
+// One frame through the detection chain as detect and track both run it: binned by `bin`
+// (choose_bin()'s factor for this frame), the best options.max_quads quadrangles kept; the
+// result in the binned frame's pixels (to_input_pixels() maps it back). On failure returns false
 // with a one-line reason (no command prefix) in `error`.
-bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, DetectResult& result,
-                  std::string& error);
+bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, uint8_t bin,
+                  DetectResult& result, std::string& error);
 
 // args: everything after "detect". Writes the JSON (one line) to `out`, one error line to
 // `err`. Returns the exit status: 0 ok, 1 bad input file or frame, 2 bad command line.

@@ -40,10 +40,11 @@ void homography(std::string& out, const Point16 (&corners)[4], uint16_t w, uint1
     out += "]]";
 }
 
-// "width":W,"height":H,"status":"..." (no braces).
+// "width":W,"height":H,"bin":N,"status":"..." (no braces).
 void frame_fields(std::string& out, const DetectResult& r) {
     out += "\"width\":" + std::to_string(r.width) + ",\"height\":" + std::to_string(r.height) +
-           ",\"status\":\"" + (r.status == Status::ok ? "ok" : "capacity_exceeded") + "\"";
+           ",\"bin\":" + std::to_string(r.bin) + ",\"status\":\"" +
+           (r.status == Status::ok ? "ok" : "capacity_exceeded") + "\"";
 }
 
 // [{"x1":..,...,"theta_deg":..}, ...]

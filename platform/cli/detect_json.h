@@ -1,9 +1,11 @@
 // The one definition of `quadtrack detect`'s JSON (see docs/cli.md), written on
 // one line so a sequence of frames is JSON Lines:
-//   {"width":W,"height":H,"status":"ok",
+//   {"width":W,"height":H,"bin":N,"status":"ok",
 //    "lines":[{"x1":..,"y1":..,"x2":..,"y2":..,"rho":..,"theta_deg":..}, ...],
 //    "quads":[{"corners":[[x,y],[x,y],[x,y],[x,y]],"score":..,
 //              "display_homography":[[a,b,c],[d,e,f],[g,h,1]]}, ...]}
+// W × H is the input frame; bin is the factor it was binned by before detection (1: not
+// binned; docs/cli.md), and every coordinate is in the input's pixels all the same.
 // Pixels with the origin at the centre of pixel (0, 0), x right, y down; rho >= 0 and
 // theta_deg in [0, 360) the direction of the line's normal from the origin (y down: clockwise
 // on screen); corners anti-clockwise as seen, the first with the smallest x + y (top-left);
@@ -12,7 +14,7 @@
 // (u, v, 1) onto image pixels (x·w, y·w, w), or is null when it cannot be represented.
 //
 // `quadtrack track` writes one line per frame with the same pieces (docs/cli.md):
-//   {"frame":K,"width":W,"height":H,"status":"ok","state":"none"|"started"|"tracking",
+//   {"frame":K,"width":W,"height":H,"bin":N,"status":"ok","state":"none"|"started"|"tracking",
 //    "track_id":N,
 //    "quad":{"corners":[[x,y],[x,y],[x,y],[x,y]],"source":["detected"|"predicted", x4],
 //            "display_homography":[[..],[..],[..]]}|null,

@@ -114,4 +114,28 @@ Flag<Options, Command> integer_flag(const char* name, const char* value, const c
             command};
 }
 
+// --bin N|auto: frames are reduced by N × N block means before the chain (core's binning stage,
+// gradient/binning.h); auto (stored as 0) picks the smallest N that fits the build.
+template <class Options, class Command>
+Flag<Options, Command> bin_flag(std::function<uint8_t&(Options&)> field, Command command) {
+    return {"bin",
+            "N|auto",
+            "frames larger than 640 x 480 are binned: each pixel the mean of an N x N block, "
+            "results in the input's pixels; auto: the smallest N that fits, 1..16",
+            [field](Options o) {
+                return field(o) == 0 ? std::string("auto") : std::to_string(field(o));
+            },
+            [field](const std::string& t, Options& o, std::string& e) {
+                if (t == "auto") {
+                    field(o) = 0;
+                    return true;
+                }
+                long v = 0;
+                if (!parse_int(t, 1, 16, v, e)) return false;
+                field(o) = static_cast<uint8_t>(v);
+                return true;
+            },
+            command};
+}
+
 }  // namespace qt::cli

@@ -19,7 +19,8 @@ int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
         const io::FrameSource::Next next = source.next(frame, error);
         if (next == io::FrameSource::Next::end) {
             if (k > 0) return 0;
-            qt::io::print_error_line(err, "quadtrack %s: %s: no frames", command, spec.c_str());
+            qt::io::print_error_line(err, "quadtrack %s: %s: no frames", command,
+                                     io::input_name(spec).c_str());
             return 1;
         }
         if (next == io::FrameSource::Next::error) {
@@ -32,7 +33,7 @@ int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
         } else if (frame.width != width || frame.height != height) {
             qt::io::print_error_line(
                 err, "quadtrack %s: %s: frame %d is %d x %d, the sequence started at %d x %d",
-                command, spec.c_str(), k, frame.width, frame.height, width, height);
+                command, io::input_name(spec).c_str(), k, frame.width, frame.height, width, height);
             return 1;
         }
         const int status = body(k, frame);

@@ -2,24 +2,33 @@
 
 #include <memory>
 
+#include "cli/board_runner.h"
 #include "cli/frame_loop.h"
 #include "cli/target_json.h"
 #include "io/error_line.h"
+#include "io/image_io.h"
+#include "io/push_frame.h"
 
 namespace qt::cli {
 
 std::string target_usage() {
     return "usage: quadtrack target SEQUENCE --roi X,Y,W,H [OPTIONS]\n"
-           "  SEQUENCE is a Y4M file, a printf pattern of PGM/PPM files (frames/f%03d.pgm) or one\n"
-           "  PGM/PPM file; every frame the same size, at most 640 x 480 pixels. The target is "
-           "the\n"
-           "  box X,Y,W,H of frame 0; one JSON line per frame "
-           "{\"frame\",\"x\",\"y\",\"state\",...}\n"
-           "  (see docs/cli.md); x, y may lie outside the image while the target\n"
-           "  is out of view.\n"
+           "  SEQUENCE is a Y4M file, a printf pattern of PGM/PPM files (frames/f%03d.pgm), one\n"
+           "  PGM/PPM file, or - for standard input (Y4M, or PGM/PPM images one after another);\n"
+           "  every frame the same size; frames larger than 640 x 480 pixels are binned to fit\n"
+           "  (--bin). The target is the box X,Y,W,H of frame 0 (input pixels; at most 24 x 24\n"
+           "  once binned); one JSON line per frame {\"frame\",\"x\",\"y\",\"state\",...}\n"
+           "  (see docs/cli.md); x, y may lie outside the image while the target is out of view.\n"
            "options (--name VALUE or --name=VALUE):\n" +
            target_options_help(GeometryCommand::target);
 }
+
+namespace {
+
+// ⌊a / n⌋ for n > 0 and any a.
+int floor_div(int a, int n) { return a >= 0 ? a / n : -((-a + n - 1) / n); }
+
+}  // namespace
 
 int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     TargetOptions options;
@@ -28,36 +37,57 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
                                                  options, positional, out, err);
     if (parsed >= 0) return parsed;
     const std::string& spec = positional[0];
+    const std::string name = io::input_name(spec);
     auto pipeline = std::make_unique<CliTargetPipeline>();  // ~120 KB: heap, not stack
-    pipeline->set_target(options.roi_x, options.roi_y, static_cast<uint8_t>(options.roi_w),
-                         static_cast<uint8_t>(options.roi_h));
+    auto binning = std::make_unique<BinningStage<640>>();
+    uint8_t bin = 1;
     return for_each_frame(spec, "target", err, [&](int k, const io::GreyImage& frame) {
-        const int width = frame.width, height = frame.height;
-        if (width > 640 || height > 480) {
-            qt::io::print_error_line(
-                err, "quadtrack target: %s: %d x %d is above the 640 x 480 capacity", spec.c_str(),
-                width, height);
-            return 1;
+        std::string error;
+        if (k == 0) {
+            bin = choose_bin(frame.width, frame.height, options.bin, error);
+            if (bin == 0) {
+                qt::io::print_error_line(err, "quadtrack target: %s: %s", name.c_str(),
+                                         error.c_str());
+                return 1;
+            }
+            // The box in the binned frame: every binned pixel it touches.
+            const int x0 = floor_div(options.roi_x, bin), y0 = floor_div(options.roi_y, bin);
+            const int w = floor_div(options.roi_x + options.roi_w - 1, bin) - x0 + 1;
+            const int h = floor_div(options.roi_y + options.roi_h - 1, bin) - y0 + 1;
+            if (w > CliTargetCapacity::max_template || h > CliTargetCapacity::max_template) {
+                qt::io::print_error_line(
+                    err,
+                    "quadtrack target: --roi %d,%d,%d,%d: templates are at most 24 x 24 px, this "
+                    "one is %d x %d binned by %d",
+                    options.roi_x, options.roi_y, options.roi_w, options.roi_h, w, h, bin);
+                return 2;
+            }
+            pipeline->set_target(x0, y0, static_cast<uint8_t>(w), static_cast<uint8_t>(h));
         }
+        const int width = frame.width / bin, height = frame.height / bin;
         Status s = pipeline->begin_frame(static_cast<uint16_t>(width),
                                          static_cast<uint16_t>(height), options.config);
-        for (int y = 0; y < height && (s == Status::ok || s == Status::previous_frame_incomplete);
-             ++y)
-            s = pipeline->push_row(frame.row(y), static_cast<uint16_t>(width));
+        if (s == Status::ok || s == Status::previous_frame_incomplete) {
+            s = io::push_binned_rows(*binning, frame, bin, [&](const uint8_t* row, uint16_t n) {
+                const Status r = pipeline->push_row(row, n);
+                return r == Status::previous_frame_incomplete ? Status::ok : r;
+            });
+        }
         TargetFrame result;
-        if (s == Status::ok || s == Status::previous_frame_incomplete) s = pipeline->finish(result);
+        if (s == Status::ok) s = pipeline->finish(result);
         if (s == Status::bad_size && k == 0) {
             qt::io::print_error_line(
                 err, "quadtrack target: --roi %d,%d,%d,%d is not wholly inside the %d x %d frame 0",
-                options.roi_x, options.roi_y, options.roi_w, options.roi_h, width, height);
+                options.roi_x, options.roi_y, options.roi_w, options.roi_h, frame.width,
+                frame.height);
             return 1;
         }
         if (s != Status::ok && s != Status::capacity_exceeded) {
-            qt::io::print_error_line(err, "quadtrack target: %s: frame %d: %s", spec.c_str(), k,
+            qt::io::print_error_line(err, "quadtrack target: %s: frame %d: %s", name.c_str(), k,
                                      status_name(s));
             return 1;
         }
-        std::fprintf(out, "%s\n", target_json(k, result).c_str());
+        std::fprintf(out, "%s\n", target_json(k, result, bin).c_str());
         std::fflush(out);
         return 0;
     });

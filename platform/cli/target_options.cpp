@@ -96,7 +96,8 @@ bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
             return false;
         }
         long n = 0;
-        const long lo = i < 2 ? -100000 : 1, hi = i < 2 ? 100000 : 24;
+        // Sizes up to 24 px once binned (checked when frame 0's bin factor is known): 24 × 16.
+        const long lo = i < 2 ? -100000 : 1, hi = i < 2 ? 100000 : 24 * 16;
         std::string why;
         if (!parse_int(t.substr(start, comma - start), lo, hi, n, why)) {
             e = std::string(i < 2 ? "position " : "size (templates are at most 24 x 24 px) ") + why;
@@ -118,7 +119,8 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
     static const FlagTable<TargetOptions, GeometryCommand> options{
         {
             {"roi", "X,Y,W,H",
-             "the target's box in frame 0: top-left pixel and size, px (W, H 1..24)",
+             "the target's box in frame 0: top-left pixel and size, px (W, H 1..24, or up to 24 "
+             "once binned)",
              [](TargetOptions o) {
                  return o.roi_set ? std::to_string(o.roi_x) + "," + std::to_string(o.roi_y) + "," +
                                         std::to_string(o.roi_w) + "," + std::to_string(o.roi_h)
@@ -153,6 +155,8 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                  return true;
              },
              GeometryCommand::target},
+            bin_flag<TargetOptions, GeometryCommand>(
+                [](TargetOptions& o) -> uint8_t& { return o.bin; }, GeometryCommand::homography),
             real("q-pos", "PX2", "Kalman Q's position variance per frame, px^2, 0..10000", 0, 10000,
                  [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_pos; }),
             real("q-vel", "PX2", "Kalman Q's velocity variance per frame, (px/frame)^2, 0..1000", 0,

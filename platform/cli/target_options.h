@@ -24,7 +24,8 @@ enum class GeometryCommand { homography, target };
 struct TargetOptions {
     TargetPipelineParams config;                     // defaults: default_target_config()
     bool roi_set = false;                            // target: --roi is required
-    int roi_x = 0, roi_y = 0, roi_w = 0, roi_h = 0;  // px, frame 0
+    int roi_x = 0, roi_y = 0, roi_w = 0, roi_h = 0;  // px, frame 0 (the input's pixels)
+    uint8_t bin = 0;  // binning factor of frames over 640 × 480, 1..16; 0: the smallest that fits
     TargetOptions();
 };
 

@@ -4,6 +4,7 @@
 #include "cli/detect_json.h"
 #include "cli/frame_loop.h"
 #include "io/error_line.h"
+#include "io/image_io.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -11,10 +12,12 @@ namespace qt::cli {
 std::string track_usage() {
     return "usage: quadtrack track SEQUENCE [OPTIONS]\n"
            "  SEQUENCE is a Y4M file (every frame's Y plane), a printf pattern of PGM/PPM files\n"
-           "  (frames/f%03d.pgm: numbered from 0, or 1, to the first missing number) or one\n"
-           "  PGM/PPM file; every frame the same size, at most " +
+           "  (frames/f%03d.pgm: numbered from 0, or 1, to the first missing number), one\n"
+           "  PGM/PPM file, or - for standard input (a Y4M stream, or PGM/PPM images one after\n"
+           "  another: each frame's line is written as soon as the frame has been read). Every\n"
+           "  frame the same size; frames larger than " +
            std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
-           " pixels.\n"
+           " pixels are binned to fit (--bin).\n"
            "  Each frame is detected as by quadtrack detect, then the quadrangle tracker carries "
            "the\n"
            "  board: one JSON line per frame on stdout (see docs/cli.md).\n"
@@ -46,23 +49,38 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         parse_command_line(args, Command::track, track_usage(), options, spec, out, err);
     if (parsed >= 0) return parsed;
 
+    const std::string name = io::input_name(spec);
     QuadTracker tracker;
+    uint8_t bin = 1;
     return for_each_frame(spec, "track", err, [&](int k, const io::GreyImage& frame) {
-        if (k == 0)
-            tracker.set_params(tracker_params(options, static_cast<uint16_t>(frame.width),
-                                              static_cast<uint16_t>(frame.height)));
-        DetectResult result;
         std::string error;
-        if (!detect_frame(frame, options, result, error)) {
-            qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", spec.c_str(), k,
+        if (k == 0) {
+            // Every frame has frame 0's size: one bin factor, and the tracker works in the
+            // binned frame's pixels.
+            bin = choose_bin(frame.width, frame.height, options.bin, error);
+            if (bin == 0) {
+                qt::io::print_error_line(err, "quadtrack track: %s: %s", name.c_str(),
+                                         error.c_str());
+                return 1;
+            }
+            tracker.set_params(tracker_params(options, static_cast<uint16_t>(frame.width / bin),
+                                              static_cast<uint16_t>(frame.height / bin)));
+        }
+        DetectResult result;
+        if (!detect_frame(frame, options, bin, result, error)) {
+            qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", name.c_str(), k,
                                      error.c_str());
             return 1;
         }
-        const TrackedQuad t =
+        TrackedQuad t =
             tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
                          result.quads.data(), static_cast<uint16_t>(result.quads.size()));
+        to_input_pixels(result, frame.width, frame.height);
+        to_input_pixels(t, bin);
         const std::string line = track_json(k, result, t, tracker.stats().lost_reason,
                                             options.display_width, options.display_height);
+        // Written and flushed before the next frame is read: a live pipe gets each frame's
+        // line as soon as the frame is in.
         std::fprintf(out, "%s\n", line.c_str());
         std::fflush(out);
         return 0;

@@ -31,28 +31,67 @@ void side_line(io::RgbImage& pic, Point16 a, Point16 b, io::Rgb colour, bool das
     }
 }
 
-// The worst distance of corners 0..3 from the truth TL, TR, BR, BL (corners 0, 3, 2, 1 in
-// detect's anti-clockwise order), px.
-double worst_corner_error(const TrackedQuad& t, const scene::BoardScene& sc) {
-    double worst = 0;
-    const int truth_of[4] = {0, 3, 2, 1};
+// "D P D T": side i detected, predicted or taken back from the detection.
+void side_letters(const TrackedQuad& t, uint8_t taken_back, char (&text)[8]) {
     for (int i = 0; i < 4; ++i) {
-        const auto& c = sc.corners[truth_of[i]];
-        worst = std::fmax(
-            worst, std::hypot(px(t.corners[i].x) - c.x / 256.0, px(t.corners[i].y) - c.y / 256.0));
-    }
-    return worst;
-}
-
-// "D P D P": side i detected or predicted.
-void side_letters(const TrackedQuad& t, char (&text)[8]) {
-    for (int i = 0; i < 4; ++i) {
-        text[2 * i] = (t.detected >> i) & 1 ? 'D' : 'P';
+        text[2 * i] = (taken_back >> i) & 1 ? 'T' : (t.detected >> i) & 1 ? 'D' : 'P';
         text[2 * i + 1] = i < 3 ? ' ' : '\0';
     }
 }
 
 }  // namespace
+
+double worst_corner_error(const TrackedQuad& t, const scene::BoardScene& truth) {
+    // The truth is TL, TR, BR, BL (clockwise as seen); detect's order runs the other way.
+    double best = 1e30;
+    for (int r = 0; r < 4; ++r) {
+        double worst = 0;
+        for (int i = 0; i < 4; ++i) {
+            const auto& c = truth.corners[(r + 4 - i) % 4];
+            worst = std::fmax(worst, std::hypot(px(t.corners[i].x) - c.x / 256.0,
+                                                px(t.corners[i].y) - c.y / 256.0));
+        }
+        best = std::fmin(best, worst);
+    }
+    return best;
+}
+
+QuadTrackerParams demo_tracker_params(LineModel model, uint16_t width, uint16_t height) {
+    QuadTrackerParams p = default_quad_tracker_params(width, height);
+    p.shape = sized_quad_params(BoardParams{}.quads, height);
+    p.lines.model = model;
+    return p;
+}
+
+bool track_board_sequence(const scene::BoardMotionSpec& spec, int width, int height,
+                          const QuadTrackerParams& params, std::vector<BoardTrackFrame>& out,
+                          std::string& error) {
+    out.clear();
+    const uint8_t bin = choose_bin(width, height, 0, error);
+    if (bin == 0) return false;
+    QuadTracker tracker(params);
+    for (int f = 0; f < spec.frames; ++f) {
+        const scene::BoardSequenceFrame d = scene::sized_sequence_frame(spec, f, width, height);
+        DetectResult r;
+        if (!detect_board(d.image, BoardParams{}, r, bin)) {
+            error = "frame " + std::to_string(f) + ": " + status_name(r.status);
+            return false;
+        }
+        BoardTrackFrame k;
+        k.quad = tracker.step(r.lines.data(), static_cast<uint16_t>(r.lines.size()), r.quads.data(),
+                              static_cast<uint16_t>(r.quads.size()));
+        to_input_pixels(r, width, height);
+        to_input_pixels(k.quad, bin);
+        k.lost = tracker.stats().lost_reason;
+        k.taken_back = tracker.stats().taken_back;
+        if (k.quad.state != TrackState::none)
+            k.worst_error_px = worst_corner_error(k.quad, d.scene);
+        k.hidden = d.hidden;
+        k.lines = std::move(r.lines);
+        out.push_back(std::move(k));
+    }
+    return true;
+}
 
 bool run_demo_sequence(const std::string& out_dir) {
     std::printf(
@@ -61,39 +100,38 @@ bool run_demo_sequence(const std::string& out_dir) {
         "%d-%d dark bars hide its top and bottom sides.\n"
         "  tracked with the turn model (quadtrack track --model turn) and, for comparison, the "
         "paper's 3KF "
-        "(the default); pictures and sides are the turn model's\n"
+        "(--model paper); pictures and sides are the turn model's\n"
         "  pictures: lines (red), detected sides (solid green), predicted sides (dashed orange), "
         "corners "
         "(yellow rings, the first cyan), the truth's corners (magenta dots)\n"
-        "  sides: D detected, P predicted, in corner order (left, bottom, right, top)\n",
+        "  sides: D detected, P predicted, T taken back from the detection, in corner order "
+        "(left, bottom, right, top)\n",
         scene::kBoardSequenceFrames, scene::kFirstHiddenFrame, scene::kLastHiddenFrame);
-    const BoardParams params;
-    QuadTrackerParams tp = default_quad_tracker_params(640, 480);
-    tp.shape = params.quads;
-    QuadTracker paper(tp);
-    tp.lines.model = LineModel::turn;
-    QuadTracker turn(tp);
+    std::vector<BoardTrackFrame> turn, paper;
+    std::string error;
+    if (!track_board_sequence(scene::kDemoSequence, 640, 480,
+                              demo_tracker_params(LineModel::turn, 640, 480), turn, error) ||
+        !track_board_sequence(scene::kDemoSequence, 640, 480,
+                              demo_tracker_params(LineModel::closest_points, 640, 480), paper,
+                              error)) {
+        qt::io::print_error_line(stderr, "quadtrack demo: %s", error.c_str());
+        return false;
+    }
     for (int f = 0; f < scene::kBoardSequenceFrames; ++f) {
         const scene::BoardSequenceFrame d = scene::board_sequence_frame(f);
         const scene::BoardScene& sc = d.scene;
-        DetectResult r;
-        if (!detect_board(d.image, params, r)) {
-            qt::io::print_error_line(stderr, "quadtrack demo: frame %d: %s", f,
-                                     status_name(r.status));
-            return false;
-        }
-        const uint16_t n = static_cast<uint16_t>(r.lines.size()),
-                       nq = static_cast<uint16_t>(r.quads.size());
-        const TrackedQuad t = turn.step(r.lines.data(), n, r.quads.data(), nq);
-        const TrackedQuad p = paper.step(r.lines.data(), n, r.quads.data(), nq);
+        const BoardTrackFrame& tf = turn[static_cast<size_t>(f)];
+        const BoardTrackFrame& pf = paper[static_cast<size_t>(f)];
+        const TrackedQuad& t = tf.quad;
+        const TrackedQuad& p = pf.quad;
         io::RgbImage pic = io::RgbImage::from_grey(d.image, 60);
-        for (const Segment& l : r.lines)
+        for (const Segment& l : tf.lines)
             pic.line(px(l.x1), px(l.y1), px(l.x2), px(l.y2), {255, 50, 50});
         // The truth, as the scene generator placed it: in its order TL, TR, BR, BL.
         for (const auto& c : sc.corners) pic.ring(c.x / 256.0, c.y / 256.0, 1, {255, 0, 255});
         char name[32];
         std::snprintf(name, sizeof name, "board_%02d.png", f);
-        std::printf("frame %2d: %2zu lines%s, ", f, r.lines.size(),
+        std::printf("frame %2d: %2zu lines%s, ", f, tf.lines.size(),
                     d.hidden ? ", bars over top+bottom" : "");
         if (t.state == TrackState::none) {
             std::printf("no quadrangle");
@@ -109,29 +147,27 @@ bool run_demo_sequence(const std::string& out_dir) {
                 pic.ring(px(t.corners[i].x), px(t.corners[i].y), 5, colour);
             }
             char sides[8];
-            side_letters(t, sides);
+            side_letters(t, tf.taken_back, sides);
             std::printf(
                 "quad (%s, sides %s) track %u, corners (%.1f,%.1f) (%.1f,%.1f) (%.1f,%.1f) "
                 "(%.1f,%.1f), "
                 "worst corner error %.2f px",
                 track_state_name(t.state), sides, t.track_id, px(t.corners[0].x),
                 px(t.corners[0].y), px(t.corners[1].x), px(t.corners[1].y), px(t.corners[2].x),
-                px(t.corners[2].y), px(t.corners[3].x), px(t.corners[3].y),
-                worst_corner_error(t, sc));
+                px(t.corners[2].y), px(t.corners[3].x), px(t.corners[3].y), tf.worst_error_px);
         }
-        if (turn.stats().lost_reason != QuadTrackLost::none)
-            std::printf(", a track was lost: %s", quad_track_lost_name(turn.stats().lost_reason));
+        if (tf.lost != QuadTrackLost::none)
+            std::printf(", a track was lost: %s", quad_track_lost_name(tf.lost));
         if (p.state == TrackState::none) {
             std::printf("; 3KF: none");
         } else {
             char sides[8];
-            side_letters(p, sides);
-            std::printf("; 3KF: sides %s, %.2f px", sides, worst_corner_error(p, sc));
+            side_letters(p, pf.taken_back, sides);
+            std::printf("; 3KF: sides %s, %.2f px", sides, pf.worst_error_px);
         }
-        if (paper.stats().lost_reason != QuadTrackLost::none)
-            std::printf(", lost: %s", quad_track_lost_name(paper.stats().lost_reason));
+        if (pf.lost != QuadTrackLost::none)
+            std::printf(", lost: %s", quad_track_lost_name(pf.lost));
         std::printf(" -> %s\n", name);
-        std::string error;
         if (!io::write_png(out_dir + "/" + name, pic.width, pic.height, 3, pic.pixels, error)) {
             qt::io::print_error_line(stderr, "quadtrack demo: %s", error.c_str());
             return false;

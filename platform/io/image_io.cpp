@@ -14,20 +14,23 @@ namespace qt::io {
 
 namespace {
 
+// Closes what was opened; standard input is left open.
 struct FileCloser {
-    void operator()(std::FILE* f) const { std::fclose(f); }
+    void operator()(std::FILE* f) const {
+        if (f != stdin) std::fclose(f);
+    }
 };
 using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
 bool fail(std::string& error, const std::string& path, const std::string& what) {
-    error = one_line(path + ": " + what);
+    error = one_line(input_name(path) + ": " + what);
     return false;
 }
 
 // When even the message cannot be built; clear() cannot throw.
 void out_of_memory(std::string& error, const std::string& path) noexcept {
     try {
-        error = one_line(path + ": out of memory");
+        error = one_line(input_name(path) + ": out of memory");
     } catch (...) {
         error.clear();
     }
@@ -35,7 +38,9 @@ void out_of_memory(std::string& error, const std::string& path) noexcept {
 
 std::string errno_text(int e) { return std::strerror(e); }
 
+// "-" is standard input (not closed by FilePtr), anything else a file.
 FilePtr open_read(const std::string& path, std::string& error) {
+    if (path == kStandardInput) return FilePtr(stdin);
     errno = 0;
     FilePtr f(std::fopen(path.c_str(), "rb"));
     if (!f) fail(error, path, "cannot open (" + errno_text(errno) + ")");
@@ -388,6 +393,10 @@ FrameResult read_y4m_frame(std::FILE* f, const std::string& path, const Y4mInfo&
 
 }  // namespace
 
+std::string input_name(const std::string& path) {
+    return path == kStandardInput ? "standard input" : path;
+}
+
 bool read_image(const std::string& path, GreyImage& out, std::string& error) {
     try {
         FilePtr f = open_read(path, error);
@@ -481,6 +490,50 @@ bool write_pgm(const std::string& path, const GreyImage& img, std::string& error
     }
 }
 
+bool write_y4m_header(std::FILE* f, const std::string& name, int width, int height, bool mono,
+                      std::string& error) {
+    try {
+        if (width <= 0 || height <= 0)
+            return fail(error, name,
+                        "cannot write " + std::to_string(width) + " x " + std::to_string(height) +
+                            " frames");
+        errno = 0;
+        if (std::fprintf(f, "YUV4MPEG2 W%d H%d F25:1 Ip A1:1 C%s\n", width, height,
+                         mono ? "mono" : "420jpeg") < 0)
+            return fail(error, name, "write failed (" + errno_text(errno) + ")");
+        return true;
+    } catch (const std::bad_alloc&) {
+        out_of_memory(error, name);
+        return false;
+    }
+}
+
+bool write_y4m_frame(std::FILE* f, const std::string& name, const GreyImage& img, bool mono,
+                     std::string& error) {
+    try {
+        if (img.width <= 0 || img.height <= 0 ||
+            img.pixels.size() != static_cast<size_t>(img.width) * static_cast<size_t>(img.height))
+            return fail(error, name,
+                        "cannot write a " + std::to_string(img.width) + " x " +
+                            std::to_string(img.height) + " frame holding " +
+                            std::to_string(img.pixels.size()) + " pixels");
+        errno = 0;
+        bool ok = std::fputs("FRAME\n", f) >= 0 &&
+                  std::fwrite(img.pixels.data(), 1, img.pixels.size(), f) == img.pixels.size();
+        if (ok && !mono) {
+            const size_t chroma = 2 * ((static_cast<size_t>(img.width) + 1) / 2) *
+                                  ((static_cast<size_t>(img.height) + 1) / 2);
+            const std::vector<uint8_t> grey(chroma, 128);
+            ok = std::fwrite(grey.data(), 1, chroma, f) == chroma;
+        }
+        if (!ok) return fail(error, name, "write failed (" + errno_text(errno) + ")");
+        return true;
+    } catch (const std::bad_alloc&) {
+        out_of_memory(error, name);
+        return false;
+    }
+}
+
 namespace {
 
 // The pattern's file for `number`: prefix, the number zero-padded to `pad` digits, suffix.
@@ -539,6 +592,7 @@ bool parse_pattern(const std::string& spec, std::string& prefix, int& pad, std::
 bool FrameSource::open(const std::string& spec, std::string& error) {
     try {
         kind_ = Kind::none;
+        pending_ = Pending::none;
         spec_ = spec;
         file_.reset();
         frames_read_ = 0;
@@ -565,9 +619,20 @@ bool FrameSource::open(const std::string& spec, std::string& error) {
         }
         FilePtr f = open_read(spec, error);
         if (!f) return false;
-        switch (sniff(f.get())) {
+        const Format format = sniff(f.get());
+        switch (format) {
             case Format::pgm:
-            case Format::ppm: kind_ = Kind::single; return true;
+            case Format::ppm:
+                if (spec != kStandardInput) {
+                    kind_ = Kind::single;
+                    return true;
+                }
+                // Standard input: images one after another until it ends. The first one's
+                // magic is read here; next() reads the rest of it.
+                pending_ = format == Format::ppm ? Pending::ppm : Pending::pgm;
+                file_.reset(f.release());
+                kind_ = Kind::pnm_stream;
+                return true;
             case Format::y4m: {
                 Y4mInfo info;
                 if (!read_y4m_header(f.get(), spec, info, error)) return false;
@@ -618,6 +683,34 @@ FrameSource::Next FrameSource::next(GreyImage& out, std::string& error) {
                 }
                 ok = read_image(name, out, error);
                 ++next_number_;
+                break;
+            }
+            case Kind::pnm_stream: {
+                // After the first image: its magic, or the end of the stream.
+                if (pending_ == Pending::none) {
+                    const int c = std::getc(file_.get());
+                    if (c == EOF && !std::ferror(file_.get())) {
+                        finished_ = true;
+                        file_.reset();
+                        return Next::end;
+                    }
+                    if (c != EOF) std::ungetc(c, file_.get());
+                    const Format format = sniff(file_.get());
+                    if (format != Format::pgm && format != Format::ppm) {
+                        fail(error, spec_,
+                             "image " + std::to_string(frames_read_) +
+                                 ": not a PGM (P5) or PPM (P6) image after the one before it");
+                        ok = false;
+                        break;
+                    }
+                    pending_ = format == Format::ppm ? Pending::ppm : Pending::pgm;
+                }
+                const bool ppm = pending_ == Pending::ppm;
+                pending_ = Pending::none;
+                // Messages name the image: "standard input: image 3: truncated pixel data...".
+                ok = read_pnm(file_.get(),
+                              input_name(spec_) + ": image " + std::to_string(frames_read_), ppm,
+                              out, error);
                 break;
             }
             case Kind::y4m: {

@@ -22,9 +22,16 @@ namespace qt::io {
 // is allocated ("image too large").
 constexpr int kMaxImageSide = 16384;
 
-// Reads one grey frame from a file: PGM (P5), PPM (P6, converted to grey with BT.601 integer
-// weights Y = (77·R + 150·G + 29·B + 128) >> 8), or the Y plane of the first frame of a
-// YUV4MPEG2 (.y4m) file. The format comes from the file's magic bytes, not its name.
+// The path that stands for standard input wherever an image or a sequence is read: "-".
+constexpr const char* kStandardInput = "-";
+
+// How messages name an input: "standard input" for "-", the path itself otherwise.
+std::string input_name(const std::string& path);
+
+// Reads one grey frame from a file, or from standard input for "-": PGM (P5), PPM (P6,
+// converted to grey with BT.601 integer weights Y = (77·R + 150·G + 29·B + 128) >> 8), or the Y
+// plane of the first frame of a YUV4MPEG2 (.y4m) stream. The format comes from the magic bytes,
+// not the name. Standard input is read up to the end of that frame and left open.
 // PGM/PPM maxval 1..255 (samples below 255 are rescaled to 0..255); 16-bit files are refused.
 // On failure returns false, leaves `out` unchanged and sets `error` to one line.
 bool read_image(const std::string& path, GreyImage& out, std::string& error);
@@ -45,12 +52,25 @@ bool read_image_folder(const std::string& dir, std::vector<NamedImage>& out, std
 // On failure returns false and sets `error` to one line.
 bool write_pgm(const std::string& path, const GreyImage& img, std::string& error);
 
+// A YUV4MPEG2 stream of grey frames, written frame by frame (to a file or a pipe): the header
+// "YUV4MPEG2 W<w> H<h> F25:1 Ip A1:1 C<mono|420jpeg>", then per frame "FRAME", the Y plane and,
+// for 420jpeg, both chroma planes at 128 (no colour). Return false with one line in `error`
+// when the size is not positive or a write fails; `name` names the output in that line.
+bool write_y4m_header(std::FILE* f, const std::string& name, int width, int height, bool mono,
+                      std::string& error);
+bool write_y4m_frame(std::FILE* f, const std::string& name, const GreyImage& img, bool mono,
+                     std::string& error);
+
 // A sequence of grey frames, read one at a time. The spec given to open() is one of:
 //  - a printf-style pattern of PGM/PPM files (any spec containing '%'), with exactly one
 //    "%d" or "%0Nd" (N = 1..9) and "%%" for a literal '%', e.g. "frames/f%03d.pgm": numbered
 //    from 0, or from 1 if file 0 does not exist, and ending at the first missing number;
 //  - a .y4m file (recognised by its magic): every frame's Y plane, in order;
-//  - any other single image file read_image accepts: one frame.
+//  - any other single image file read_image accepts: one frame;
+//  - "-", standard input: a Y4M stream (every frame, as a file), or PGM/PPM images one after
+//    another until the stream ends (what `ffmpeg -f image2pipe -c:v pgm -` writes). Each frame is
+//    read when next() asks for it, never ahead, so a live pipe is processed as it comes; a
+//    stream that ends inside a frame is an error (Next::error) after the whole frames before.
 // Frames of a pattern are not required to share one size; the caller checks if it cares.
 class FrameSource {
 public:
@@ -70,10 +90,14 @@ public:
     int frames_read() const { return frames_read_; }
 
 private:
-    struct FileCloser {
-        void operator()(std::FILE* f) const { std::fclose(f); }
+    struct FileCloser {  // standard input is left open
+        void operator()(std::FILE* f) const {
+            if (f != stdin) std::fclose(f);
+        }
     };
-    enum class Kind { none, single, pattern, y4m };
+    enum class Kind { none, single, pattern, y4m, pnm_stream };
+    // pnm_stream: the kind of the image whose magic open() or next() has read already.
+    enum class Pending { none, pgm, ppm };
 
     Kind kind_ = Kind::none;
     std::string spec_;
@@ -81,7 +105,9 @@ private:
     std::string prefix_, suffix_;
     int pad_width_ = 0;
     long next_number_ = 0;
-    // y4m: the open file, the frame size and the chroma bytes to skip after each Y plane.
+    Pending pending_ = Pending::none;
+    // y4m, pnm_stream: the open file; y4m: the frame size and the chroma bytes to skip after
+    // each Y plane.
     std::unique_ptr<std::FILE, FileCloser> file_;
     int width_ = 0, height_ = 0;
     uint64_t chroma_bytes_ = 0;

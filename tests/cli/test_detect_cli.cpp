@@ -11,6 +11,7 @@
 #include "cli/detect_command.h"
 #include "io/image_io.h"
 #include "scene/board_scene.h"
+#include "scene/board_sequence.h"
 #include "support/cli_run.h"
 #include "support/json_reader.h"
 #include "support/temp_dir.h"
@@ -63,6 +64,45 @@ void require_error(const std::vector<std::string>& args, int status, const std::
 }
 
 }  // namespace
+
+TEST_CASE("detect bins a frame larger than the build and reports in the input's pixels",
+          "[cli][binning]") {
+    // 1283 × 963: by 2 it would be 641 wide, so by 3 (427 × 321, the last 2 columns and 0 rows
+    // dropped).
+    const qt::scene::BoardSequenceFrame d =
+        qt::scene::sized_sequence_frame(qt::scene::kDemoSequence, 0, 1283, 963);
+    const std::string path = (temp_dir() / "big_board.pgm").string();
+    std::string error;
+    REQUIRE(qt::io::write_pgm(path, d.image, error));
+    const Run r = detect({path});
+    INFO("stderr: " << r.err);
+    REQUIRE(r.status == 0);
+    const Json j = JsonReader::parse(r.out);
+    CHECK(j["width"].num == 1283);
+    CHECK(j["height"].num == 963);
+    CHECK(j["bin"].num == 3);
+    // Every line's rho and theta still describe the line through its end points (mapped
+    // separately: end points by N·u + (N − 1)/2, rho by N·rho + (N − 1)/2·(cos + sin)).
+    REQUIRE(j["lines"].items.size() >= 4);
+    for (const Json& l : j["lines"].items) {
+        CHECK(l["rho"].num >= 0);
+        const double t = l["theta_deg"].num * 3.14159265358979323846 / 180;
+        CHECK(std::fabs(l["x1"].num * std::cos(t) + l["y1"].num * std::sin(t) - l["rho"].num) <
+              0.03);
+        CHECK(std::fabs(l["x2"].num * std::cos(t) + l["y2"].num * std::sin(t) - l["rho"].num) <
+              0.03);
+    }
+    // The corners within a binned pixel (3 px) of the scene's, as the 640 × 480 frame's are
+    // within 1 px (below).
+    REQUIRE(j["quads"].items.size() >= 1);
+    const Json& q = j["quads"][0];
+    const int truth_of[4] = {0, 3, 2, 1};  // anti-clockwise as seen from top-left
+    for (size_t i = 0; i < 4; ++i) {
+        const auto& c = d.scene.corners[truth_of[i]];
+        CHECK(std::hypot(q["corners"][i][0].num - c.x / 256.0,
+                         q["corners"][i][1].num - c.y / 256.0) < 3.0);
+    }
+}
 
 TEST_CASE("detect prints JSON with the board's corners anti-clockwise as seen", "[cli]") {
     const Run r = detect({board_pgm()});
@@ -155,8 +195,16 @@ TEST_CASE("detect: every error is one line on stderr and a non-zero exit", "[cli
     require_error({write_file("raster.pgm", "P5\n4 4\n255\n" + std::string(5, 'a'))}, 1,
                   "truncated");
     require_error({write_file("notimage.txt", "hello world\n")}, 1, "not a PGM");
-    require_error({write_file("big.pgm", "P5\n641 480\n255\n" + std::string(641 * 480, '\0'))}, 1,
-                  "641 x 480 is over this build's capacity of 640 x 480");
+    // Larger frames are binned to fit (test_streams.cpp), unless --bin says otherwise or no
+    // factor fits.
+    const std::string big =
+        write_file("big.pgm", "P5\n641 480\n255\n" + std::string(641 * 480, '\0'));
+    require_error({big, "--bin", "1"}, 1,
+                  "641 x 480 binned by 1 is 641 x 480, not within this build's 640 x 480");
+    require_error({write_file("wide.pgm", "P5\n10256 16\n255\n" + std::string(10256 * 16, '\0'))},
+                  1, "10256 x 16 does not fit this build's 640 x 480 by any bin factor up to 16");
+    require_error({big, "--bin", "0"}, 2, "--bin: 0 is out of range 1..16");
+    require_error({big, "--bin", "two"}, 2, "'two' is not an integer");
     // Control characters in the user's arguments still give one line (shown as '?').
     require_error({img, "--threshold", "1\n2"}, 2, "'1?2' is not an integer");
     require_error({img, "--frob\nnicate=3"}, 2, "unknown option '--frob?nicate'");
