@@ -188,12 +188,12 @@ run_bench() {
             ./build/host-sanitize/platform/bench/bench_soak ${BENCH_SOAK_FLAGS:-} ;;
         hdl-latency)
             host_build all
-            (cd build/host && ctest -R '^hdl_vector_.*_nostall$' -V | grep -E 'LATENCY|PASS|Failed') ;;
+            (cd build/host && ctest -R '^hdl_.*_nostall$' -V | grep -E 'LATENCY|TRAILER|STALLS|PASS|Failed') ;;
         hdl-soak)
             host_build qt_vectors hdl_benches
             for ((s = 101; s <= 100 + ${QT_SOAK_SEEDS:-10}; ++s)); do
                 cmake -DQT_VECTORS=build/host/hw_model/qt_vectors -DVVP="$(command -v vvp)" \
-                    -DBENCH=build/host/hdl/tb_gradient_w640.vvp -DSEED="$s" -DPIXELS="${QT_SOAK_PIXELS:-1000000}" \
+                    -DBENCH=build/host/hdl/tb_front_w640.vvp -DSEED="$s" -DPIXELS="${QT_SOAK_PIXELS:-1000000}" \
                     -DPREFIX=build/host/hdl/soak/bench -P hdl/bench/run_soak.cmake 2>&1 |
                     grep -E -A1 --no-group-separator 'mismatches=|MISMATCH|EXTRA|MISSING|FATAL|Error' || true
             done | awk -v seeds="${QT_SOAK_SEEDS:-10}" '{ print }

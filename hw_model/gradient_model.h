@@ -22,10 +22,13 @@ public:
 private:
     enum class State { idle, row0, rows };
 
-    void start_frame(const InBeat& beat);
+    void start_frame(const InBeat& beat, std::vector<OutBeat>& out);
     void emit(int x, const std::vector<uint8_t>& above, const std::vector<uint8_t>& center,
-              const std::vector<uint8_t>& below, bool last_of_row, std::vector<OutBeat>& out);
-    void fail();
+              const std::vector<uint8_t>& below, bool last_of_row, bool eof,
+              std::vector<OutBeat>& out);
+    // A framing error: the frame in progress is abandoned. Once its row 0 is complete, the
+    // output row in progress is completed with fill words and ends the frame.
+    void fail(std::vector<OutBeat>& out);
 
     int max_width_;
     State state_ = State::idle;

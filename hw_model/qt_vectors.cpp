@@ -1,16 +1,17 @@
-// qt_vectors: writes or checks the golden vectors of the gradient block, the Verilog include
-// generated from the gradient-word definition, and the whole chain's test frames with
-// their expected results.
-//   qt_vectors --write ROOT            regenerate ROOT/vectors/gradient/, ROOT/vectors/scenes/ and
-//                                      ROOT/hdl/rtl/gradient_word.vh
+// qt_vectors: writes or checks the golden vectors of the gradient block and the FPGA front end,
+// the Verilog includes generated from the gradient-word and edge-beat definitions, and the whole
+// chain's test frames with their expected results.
+//   qt_vectors --write ROOT            regenerate ROOT/vectors/gradient/, ROOT/vectors/scenes/,
+//                                      ROOT/hdl/rtl/gradient_word.vh and ROOT/hdl/rtl/edge_beat.vh
 //   qt_vectors --check ROOT            exit 1 unless every committed file equals a fresh generation
 //   qt_vectors --direction-table FILE  expected direction bin of every (gx, gy), gx outer, gy
-//   inner,
-//                                      -255..255 each, one hex digit per line
-//                                      (hdl/bench/tb_direction.v)
-//   qt_vectors --soak SEED PIXELS PREFIX  a soak stream (docs/gradient.md, "Soak") of at least
-//                                      PIXELS input beats: PREFIX.in.hex, PREFIX.out.hex,
-//                                      PREFIX.resets.hex; prints its counts on one line
+//                                      inner, -255..255 each, one hex digit per line
+//                                      (hdl/bench/tb_direction.v; also committed as
+//                                      vectors/gradient/direction_table.hex)
+//   qt_vectors --soak SEED PIXELS PREFIX [MAX_WIDTH]  a soak stream (docs/gradient.md, "Soak") of
+//                                      at least PIXELS input beats for MAX_WIDTH (640):
+//                                      PREFIX.in.hex, .out.hex, .edges.hex, .resets.hex; prints
+//                                      its counts on one line
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -19,31 +20,57 @@
 #include <string>
 
 #include "chain_cases.h"
+#include "edge_model.h"
 #include "gradient_cases.h"
 #include "gradient_model.h"
+#include "io/image_io.h"
 #include "soak_stream.h"
 
 namespace {
 
 using Files = std::map<std::string, std::string>;  // path relative to ROOT -> contents
 
+std::string direction_text() {
+    std::string s;
+    s.reserve(511 * 511 * 2);
+    for (int gx = -255; gx <= 255; ++gx)
+        for (int gy = -255; gy <= 255; ++gy) {
+            s += "0123456789abcdef"[qt::direction_bin(gx, gy)];
+            s += '\n';
+        }
+    return s;
+}
+
 Files generate() {
     using namespace qt::vec;
     Files files;
     std::string manifest = manifest_header();
+    const std::string dir = "vectors/gradient/";
     for (const GradientCase& c : gradient_cases()) {
-        int errors = 0;
-        const auto out = run_model(c.in, kVectorMaxWidth, &errors);
-        const std::string in_text = format_in(c.in), out_text = format_out(out);
-        const std::string dir = "vectors/gradient/";
+        const Expected x = expected_outputs(c.in, c.reset_before, c.max_width, c.threshold);
+        const std::string in_text = format_in(c.in), out_text = format_out(x.out);
+        const std::string edge_text = format_edges(x.edges), reset_text = format_resets(x.resets);
         files[dir + c.name + ".in.hex"] = in_text;
         files[dir + c.name + ".out.hex"] = out_text;
-        ManifestEntry e{c.name, c.sizes,         c.frames,
-                        c.seed, c.in.size(),     out.size(),
-                        errors, kVectorMaxWidth, fnv1a64(out_text, fnv1a64(in_text))};
+        files[dir + c.name + ".edges.hex"] = edge_text;
+        if (!x.resets.empty()) files[dir + c.name + ".resets.hex"] = reset_text;
+        ManifestEntry e;
+        e.name = c.name;
+        e.sizes = c.sizes;
+        e.frames = c.frames;
+        e.seed = c.seed;
+        e.in_beats = c.in.size();
+        e.out_beats = x.out.size();
+        e.edge_beats = x.edges.size();
+        e.errors = x.errors;
+        e.resets = x.resets.size();
+        e.threshold = c.threshold;
+        e.max_width = c.max_width;
+        e.hash = fnv1a64(out_text, fnv1a64(in_text));
         manifest += format_manifest_line(e);
     }
-    files["vectors/gradient/manifest.txt"] = manifest;
+    files[dir + "manifest.txt"] = manifest;
+    files[dir + "direction_table.hex"] = direction_text();
     const std::vector<ChainCase> cases = chain_cases();
     const std::vector<std::string> texts = chain_texts(cases);
     for (size_t i = 0; i < cases.size(); ++i) {
@@ -53,6 +80,7 @@ Files generate() {
         files["vectors/scenes/" + c.name + ".chain.txt"] = texts[i];
     }
     files["hdl/rtl/gradient_word.vh"] = verilog_header();
+    files["hdl/rtl/edge_beat.vh"] = verilog_edge_header();
     return files;
 }
 
@@ -73,8 +101,10 @@ int write_all(const std::string& root) {
             return 1;
         }
     }
-    std::printf("wrote vectors/gradient/, vectors/scenes/ and hdl/rtl/gradient_word.vh under %s\n",
-                root.c_str());
+    std::printf(
+        "wrote vectors/gradient/, vectors/scenes/, hdl/rtl/gradient_word.vh and "
+        "hdl/rtl/edge_beat.vh under %s\n",
+        root.c_str());
     return 0;
 }
 
@@ -106,10 +136,8 @@ int check_all(const std::string& root) {
 }
 
 int direction_table(const std::string& path) {
-    std::ofstream f(path);
-    for (int gx = -255; gx <= 255; ++gx)
-        for (int gy = -255; gy <= 255; ++gy)
-            f << "0123456789abcdef"[qt::direction_bin(gx, gy)] << '\n';
+    std::ofstream f(path, std::ios::binary);
+    f << direction_text();
     if (!f) {
         std::fprintf(stderr, "qt_vectors: cannot write %s\n", path.c_str());
         return 1;
@@ -125,23 +153,27 @@ bool parse_count(const char* text, uint64_t& value) {
 }
 
 // One line of name=value counts, for scripts (hdl/bench/run_soak.cmake, bench.sh hdl-soak).
-int soak(const char* seed_text, const char* pixels_text, const std::string& prefix) {
+int soak(const char* seed_text, const char* pixels_text, const std::string& prefix,
+         const char* width_text) {
     using namespace qt::vec;
-    uint64_t seed = 0, pixels = 0;
+    uint64_t seed = 0, pixels = 0, max_width = kVectorMaxWidth;
     if (!parse_count(seed_text, seed) || !parse_count(pixels_text, pixels) || pixels == 0 ||
-        pixels > 100000000) {
+        pixels > 100000000 || (width_text && !parse_count(width_text, max_width)) ||
+        max_width < 1 || max_width > qt::ep::kMaxCoordinate + 1) {
         std::fprintf(stderr,
-                     "qt_vectors --soak: SEED must be an unsigned integer and PIXELS "
-                     "1..100000000\n");
+                     "qt_vectors --soak: SEED must be an unsigned integer, PIXELS "
+                     "1..100000000 and MAX_WIDTH 1..2048\n");
         return 2;
     }
-    const SoakStream s = make_soak_stream(seed, pixels, kVectorMaxWidth);
+    const SoakStream s = make_soak_stream(seed, pixels, static_cast<int>(max_width));
+    const Expected& x = s.expected;
     const std::pair<const char*, std::string> files[] = {{".in.hex", format_in(s.in)},
-                                                         {".out.hex", format_out(s.out)},
-                                                         {".resets.hex", format_resets(s.resets)}};
+                                                         {".out.hex", format_out(x.out)},
+                                                         {".edges.hex", format_edges(x.edges)},
+                                                         {".resets.hex", format_resets(x.resets)}};
     std::vector<ResetPoint> back;
     std::string error;
-    if (!parse_resets(files[2].second, back, error) || back != s.resets) {
+    if (!parse_resets(files[3].second, back, error) || back != x.resets) {
         std::fprintf(stderr, "qt_vectors --soak: reset points do not read back: %s\n",
                      error.c_str());
         return 1;
@@ -161,18 +193,20 @@ int soak(const char* seed_text, const char* pixels_text, const std::string& pref
                  std::to_string(s.faults[k]);
     }
     std::printf(
-        "soak seed=%llu max_width=%d in_beats=%zu out_beats=%zu errors=%d resets=%zu "
-        "pixels=%llu frames=%d clean_frames=%d faults=%d%s\n",
-        static_cast<unsigned long long>(seed), kVectorMaxWidth, s.in.size(), s.out.size(), s.errors,
-        s.resets.size(), static_cast<unsigned long long>(s.pixels), s.frames, s.clean_frames,
-        faults, kinds.c_str());
+        "soak seed=%llu max_width=%llu threshold=%d in_beats=%zu out_beats=%zu edge_beats=%zu "
+        "errors=%d resets=%zu pixels=%llu frames=%d clean_frames=%d core_frames=%d faults=%d%s\n",
+        static_cast<unsigned long long>(seed), static_cast<unsigned long long>(max_width),
+        s.threshold, s.in.size(), x.out.size(), x.edges.size(), x.errors, x.resets.size(),
+        static_cast<unsigned long long>(s.pixels), s.frames, s.clean_frames, s.core_frames, faults,
+        kinds.c_str());
     return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc == 5 && std::string(argv[1]) == "--soak") return soak(argv[2], argv[3], argv[4]);
+    if ((argc == 5 || argc == 6) && std::string(argv[1]) == "--soak")
+        return soak(argv[2], argv[3], argv[4], argc == 6 ? argv[5] : nullptr);
     if (argc == 3) {
         const std::string mode = argv[1];
         if (mode == "--write") return write_all(argv[2]);
@@ -181,6 +215,6 @@ int main(int argc, char** argv) {
     }
     std::fprintf(stderr,
                  "usage: qt_vectors --write ROOT | --check ROOT | --direction-table FILE | "
-                 "--soak SEED PIXELS PREFIX\n");
+                 "--soak SEED PIXELS PREFIX [MAX_WIDTH]\n");
     return 2;
 }

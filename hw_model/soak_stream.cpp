@@ -4,7 +4,8 @@
 #include <string>
 
 #include "base/prng.h"
-#include "gradient_model.h"
+#include "core_edges.h"
+#include "edge_model.h"
 
 namespace qt::vec {
 
@@ -33,12 +34,18 @@ struct Cut {
     bool after_error;  // the beat before it must be one the model reports an error on
 };
 
+struct CleanFrame {
+    size_t first_beat;
+    int width, height;
+};
+
 class Generator {
 public:
     Generator(uint64_t seed, int max_width) : rng_(seed), max_width_(max_width) {}
 
     void item(SoakStream& s);
     const std::vector<Cut>& cuts() const { return cuts_; }
+    const std::vector<CleanFrame>& clean() const { return clean_; }
 
 private:
     uint32_t below(uint32_t n) { return rng_.below(n); }
@@ -60,6 +67,7 @@ private:
     int mode_ = 0;  // pixel statistics of the current frame
     uint8_t level_ = 0;
     std::vector<Cut> cuts_;
+    std::vector<CleanFrame> clean_;
 };
 
 // 1, 2 and MAX_WIDTH often; otherwise uniform below a random power of two, so that most frames
@@ -67,7 +75,7 @@ private:
 int Generator::pick_width() {
     const uint32_t r = below(100);
     if (r < 8) return 1;
-    if (r < 13) return 2;
+    if (r < 13) return max_width_ < 2 ? max_width_ : 2;
     if (r < 16) return max_width_;
     const int span = 2 << below(10);  // 2..1024
     return 1 +
@@ -206,52 +214,106 @@ void Generator::frame(SoakStream& s) {
         }
         return;
     }
+    const size_t first = s.in.size();
     for (int i = 0; i < total; ++i) beat(s, i % w, i / w, i % w == w - 1, height);
     if (r < 29) {  // reset while the block flushes the last row
         cut(s, SoakFault::reset_flush);
         return;
     }
     ++s.clean_frames;
+    clean_.push_back(CleanFrame{first, w, h});
 }
 
-bool every_kind(const SoakStream& s) {
-    for (int k = 0; k < kSoakFaultKinds; ++k)
+// Every kind that frames up to max_width pixels wide can have (a one-pixel row cannot end early).
+bool every_kind(const SoakStream& s, int max_width) {
+    for (int k = 0; k < kSoakFaultKinds; ++k) {
+        const auto kind = static_cast<SoakFault>(k);
+        if (max_width < 2 && (kind == SoakFault::short_row || kind == SoakFault::reset_last_row))
+            continue;
         if (s.faults[k] == 0) return false;
+    }
     return true;
 }
 
 }  // namespace
 
+Expected expected_outputs(const std::vector<InBeat>& in, const std::vector<size_t>& reset_before,
+                          int max_width, uint16_t threshold) {
+    Expected e;
+    FrontModel model(max_width, threshold);
+    int errors_before = 0;  // errors of the models of finished segments
+    size_t c = 0;
+    e.out.reserve(in.size());
+    for (size_t i = 0; i <= in.size(); ++i) {
+        for (; c < reset_before.size() && reset_before[c] == i; ++c) {
+            errors_before += model.errors();
+            e.resets.push_back(ResetPoint{
+                static_cast<uint32_t>(i), static_cast<uint32_t>(e.out.size()),
+                static_cast<uint32_t>(e.edges.size()), static_cast<uint32_t>(errors_before)});
+            model = FrontModel(max_width, threshold);
+        }
+        if (i == in.size()) break;
+        model.push(in[i], e.out, e.edges);
+    }
+    e.errors = errors_before + model.errors();
+    return e;
+}
+
 SoakStream make_soak_stream(uint64_t seed, uint64_t pixels, int max_width) {
     SoakStream s;
+    s.threshold = static_cast<uint16_t>(1 + Pcg32(seed ^ 0x7468726573686f6cULL).below(128));
     Generator gen(seed, max_width);
-    while (s.in.size() < pixels || !every_kind(s)) gen.item(s);
+    while (s.in.size() < pixels || !every_kind(s, max_width)) gen.item(s);
 
-    // Expected output: one fresh model per segment between reset points.
-    const std::vector<Cut>& cuts = gen.cuts();
-    GradientModel model(max_width);
-    int errors_before = 0;  // errors of the models of finished segments
-    bool last_beat_error = false;
-    size_t c = 0;
-    s.out.reserve(s.in.size());
-    for (size_t i = 0; i <= s.in.size(); ++i) {
-        for (; c < cuts.size() && cuts[c].in_beat == i; ++c) {
-            if (cuts[c].after_error && !last_beat_error)
-                throw std::logic_error("soak stream: reset " + std::to_string(c) +
-                                       " is not right after an error");
-            errors_before += model.errors();
-            s.resets.push_back(ResetPoint{static_cast<uint32_t>(i),
-                                          static_cast<uint32_t>(s.out.size()),
-                                          static_cast<uint32_t>(errors_before)});
-            model = GradientModel(max_width);
-            last_beat_error = false;
+    // A reset placed right after an error must really follow one: the gradient model alone,
+    // segment by segment, says which beats are errors.
+    std::vector<size_t> points;
+    {
+        GradientModel model(max_width);
+        std::vector<OutBeat> scratch;
+        bool last_beat_error = false;
+        size_t c = 0;
+        const std::vector<Cut>& cuts = gen.cuts();
+        for (size_t i = 0; i <= s.in.size(); ++i) {
+            for (; c < cuts.size() && cuts[c].in_beat == i; ++c) {
+                if (cuts[c].after_error && !last_beat_error)
+                    throw std::logic_error("soak stream: reset " + std::to_string(c) +
+                                           " is not right after an error");
+                points.push_back(i);
+                model = GradientModel(max_width);
+                last_beat_error = false;
+            }
+            if (i == s.in.size()) break;
+            const int before = model.errors();
+            scratch.clear();
+            model.push(s.in[i], scratch);
+            last_beat_error = model.errors() != before;
         }
-        if (i == s.in.size()) break;
-        const int before = model.errors();
-        model.push(s.in[i], s.out);
-        last_beat_error = model.errors() != before;
     }
-    s.errors = errors_before + model.errors();
+    s.expected = expected_outputs(s.in, points, max_width, s.threshold);
+
+    // core = model on every clean frame small enough for core's list here.
+    for (const CleanFrame& f : gen.clean()) {
+        io::GreyImage img(f.width, f.height);
+        for (int i = 0; i < f.width * f.height; ++i)
+            img.pixels[static_cast<size_t>(i)] = s.in[f.first_beat + static_cast<size_t>(i)].pixel;
+        std::vector<edge_beat> core;
+        std::string why;
+        if (!core_edge_beats(img, s.threshold, core, why)) continue;
+        FrontModel model(max_width, s.threshold);
+        std::vector<OutBeat> words;
+        std::vector<EdgeOutBeat> edges;
+        for (int i = 0; i < f.width * f.height; ++i)
+            model.push(s.in[f.first_beat + static_cast<size_t>(i)], words, edges);
+        size_t i = 0;
+        while (i < edges.size() && i < core.size() && edges[i].data == core[i]) ++i;
+        if (i != edges.size() || i != core.size())
+            throw std::logic_error("soak stream: core's edges of the clean " +
+                                   std::to_string(f.width) + "x" + std::to_string(f.height) +
+                                   " frame at input beat " + std::to_string(f.first_beat) +
+                                   " differ from the model's at beat " + std::to_string(i));
+        ++s.core_frames;
+    }
     return s;
 }
 

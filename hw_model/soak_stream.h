@@ -1,7 +1,9 @@
-// The soak stream of the gradient block (docs/gradient.md, "Soak"): from a seed, a random run
-// of frames of random sizes with framing faults and block resets between and inside frames,
-// and what the block must emit for it. The expected output comes from GradientModel; at each
-// reset point the model is replaced by a fresh one, as the block loses its state.
+// The soak stream of the gradient block and the FPGA front end (docs/gradient.md, "Soak"): from
+// a seed, a random run of frames of random sizes with framing faults and block resets between
+// and inside frames, and what the blocks must emit for it. The expected output comes from
+// FrontModel (the gradient model, then the edge model); at each reset point the model is
+// replaced by a fresh one, as the blocks lose their state. Every clean frame's edges are also
+// computed by core and must equal the model's (core = model), or generation fails.
 #pragma once
 #include <stdint.h>
 
@@ -30,19 +32,34 @@ enum class SoakFault {
 constexpr int kSoakFaultKinds = static_cast<int>(SoakFault::count);
 const char* soak_fault_name(SoakFault f);
 
-struct SoakStream {
-    std::vector<InBeat> in;
-    std::vector<OutBeat> out;        // the model's words, segment after segment
+// What the blocks emit for an input stream with resets: the model's output segment after
+// segment.
+struct Expected {
+    std::vector<OutBeat> out;        // gradient words
+    std::vector<EdgeOutBeat> edges;  // the front end's edge beats
     std::vector<ResetPoint> resets;  // in stream order (vector_format.h)
     int errors = 0;                  // error pulses over the whole stream
-    uint64_t pixels = 0;             // input beats inside frames (all but the stray beats)
-    int frames = 0;                  // start-of-frame beats
-    int clean_frames = 0;            // frames sent whole with no fault and no reset inside
+};
+
+// reset_before: input beat indices, non-decreasing; a reset comes before each (two equal ones:
+// two resets in a row).
+Expected expected_outputs(const std::vector<InBeat>& in, const std::vector<size_t>& reset_before,
+                          int max_width, uint16_t threshold);
+
+struct SoakStream {
+    std::vector<InBeat> in;
+    Expected expected;
+    uint16_t threshold = 0;  // the front end's cfg_threshold for the stream
+    uint64_t pixels = 0;     // input beats inside frames (all but the stray beats)
+    int frames = 0;          // start-of-frame beats
+    int clean_frames = 0;    // frames sent whole with no fault and no reset inside
+    int core_frames = 0;     // clean frames whose edges core computed and matched the model
     int faults[kSoakFaultKinds] = {};
 };
 
 // At least `pixels` input beats, and every fault kind at least once. Widths 1..max_width,
-// heights 1..64.
+// heights 1..64; the threshold 1..128 from the seed. Throws std::logic_error when core's edges
+// of a clean frame differ from the model's.
 SoakStream make_soak_stream(uint64_t seed, uint64_t pixels, int max_width);
 
 }  // namespace qt::vec

@@ -11,6 +11,7 @@ const char* status_name(Status s) {
         case Status::previous_frame_incomplete: return "previous frame ended early";
         case Status::capacity_exceeded: return "capacity exceeded (results incomplete)";
         case Status::bad_row_order: return "rows out of order";
+        case Status::bad_stream: return "edge beats broken off or not fitting the frame";
     }
     return "unknown status";
 }

@@ -16,6 +16,8 @@ enum class Status : uint8_t {
                                 // incomplete; the stage's stats count what was dropped
     bad_row_order,              // a row arrived out of the order the stage needs (harris.h:
                                 // a gradient row before its pixel row, or too far behind it)
+    bad_stream,                 // the FPGA's edge beats report the frame broken off, or do not
+                                // fit it (lines/edge_beat.h)
 };
 
 // Short English name for logs and CLI messages.

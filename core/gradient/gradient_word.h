@@ -5,7 +5,8 @@
 //   [17:9]  gy   signed 9-bit, p(x,y+1) - p(x,y-1), grey levels, -255..255
 //   [26:18] mag  unsigned 9-bit, |gx| + |gy|, 0..510
 //   [30:27] dir  unsigned 4-bit, direction bin 0..15 of 22.5° each (see direction_bin)
-//   [31]    0    reserved
+//   [31]    fill 0 for a gradient; 1 on the words the FPGA block emits, all other bits 0, to
+//                complete the row of a frame whose input broke off (docs/gradient.md)
 #pragma once
 #include <stdint.h>
 
@@ -18,10 +19,11 @@ constexpr int kGxLsb = 0, kGxBits = 9;
 constexpr int kGyLsb = 9, kGyBits = 9;
 constexpr int kMagLsb = 18, kMagBits = 9;
 constexpr int kDirLsb = 27, kDirBits = 4;
+constexpr int kFillBit = 31;
 constexpr int kWordBits = 32;
 constexpr int kDirBins = 1 << kDirBits;  // 16 bins, 360° / 16 = 22.5° per bin
 constexpr uint32_t field_mask(int bits) { return (1u << bits) - 1u; }
-static_assert(kDirLsb + kDirBits <= kWordBits, "fields fit the word");
+static_assert(kDirLsb + kDirBits <= kFillBit && kFillBit < kWordBits, "fields fit the word");
 static_assert(255 + 255 <= static_cast<int>(field_mask(kMagBits)), "L1 magnitude fits");
 static_assert(kGxBits == 9 && kGyBits == 9, "accessors below sign-extend 9-bit fields");
 }  // namespace gw
@@ -67,6 +69,10 @@ constexpr gradient_word make_gradient_word_xy(int32_t gx, int32_t gy) {
     return ((static_cast<uint32_t>(gx) & gw::field_mask(gw::kGxBits)) << gw::kGxLsb) |
            ((static_cast<uint32_t>(gy) & gw::field_mask(gw::kGyBits)) << gw::kGyLsb);
 }
+
+// The word that completes a broken-off frame's row: no gradient (magnitude 0), fill bit set.
+constexpr gradient_word kFillWord = gradient_word{1} << gw::kFillBit;
+constexpr bool gradient_fill(gradient_word w) { return ((w >> gw::kFillBit) & 1u) != 0; }
 
 // Field accessors. Sign extension by xor-and-subtract: no shift of a negative value.
 constexpr int32_t gradient_gx(gradient_word w) {

@@ -93,6 +93,9 @@ public:
     }
 
     bool in_frame() const { return in_frame_; }
+    // The frame's edges came into the list from elsewhere (the FPGA's edge beats,
+    // edge_beat.h): the stage takes no more rows of it.
+    void close() { in_frame_ = false; }
 
 private:
     Status check_row(uint16_t width) {

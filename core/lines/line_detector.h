@@ -6,6 +6,7 @@
 //   static qt::LineDetectorQvga det;           // ~44 KiB, see ram_bytes()
 //   det.begin_frame(320, 240, params);
 //   for each camera row: det.push_row(row, 320);        // or push_gradient_row(words, 320)
+//   (or, with the FPGA front end: det.push_edge_beats(beats, n, &used) until edge_beats_done())
 //   det.finish();                              // runs PPHT and clustering
 //   det.lines(), det.line_count(), det.stats()
 #pragma once
@@ -13,6 +14,7 @@
 
 #include "base/capacity.h"
 #include "gradient/gradient_stage.h"
+#include "lines/edge_beat.h"
 #include "lines/edge_stage.h"
 #include "lines/hough.h"
 #include "lines/line_cluster.h"
@@ -95,6 +97,7 @@ public:
         width_ = width;
         height_ = height;
         open_ = true;
+        beats_ = rows_seen_ = false;
         return abandoned ? Status::previous_frame_incomplete : Status::ok;
     }
 
@@ -103,7 +106,8 @@ public:
     Status push_row(const uint8_t* pixels, uint16_t length) {
         // The edge stage, fed by both paths, leaves the frame with its last row: a camera row
         // after a frame of gradient words is a row after the last one too.
-        if (!open_ || !edge_stage_.in_frame()) return Status::not_in_frame;
+        if (!open_ || !edge_stage_.in_frame() || beats_) return Status::not_in_frame;
+        rows_seen_ = true;
         Status edge_status = Status::ok;
         auto edges = [&](uint16_t, const uint16_t* packed, uint16_t n) {
             const Status e = edge_stage_.push_packed_row(packed, n);
@@ -123,9 +127,33 @@ public:
 
     // A row of gradient words (from the FPGA block), instead of push_row; the same statuses.
     Status push_gradient_row(const gradient_word* words, uint16_t width) {
-        if (!open_) return Status::not_in_frame;
+        if (!open_ || beats_) return Status::not_in_frame;
+        rows_seen_ = true;
         return row_status(edge_stage_.push_row(words, width));
     }
+
+    // The frame's edge beats from the FPGA front end (edge_beat.h), instead of rows: the edge
+    // list takes its points (those at or above edge_threshold); *used says how many beats were
+    // taken, up to and including the frame's trailer, after which edge_beats_done() is true
+    // and finish() may run. bad_stream abandons the frame (the FPGA reported it broken off, or
+    // the beats do not fit it); not_in_frame after rows, or with no frame begun.
+    Status push_edge_beats(const uint8_t* beats, uint32_t count, uint32_t* used) {
+        *used = 0;
+        if (!open_ || !edge_stage_.in_frame()) return Status::not_in_frame;
+        if (!beats_) {
+            if (rows_seen_) return Status::not_in_frame;
+            beats_ = true;
+            feed_.begin_frame(edges_view_, width_, height_, params_.edge_threshold);
+        }
+        const Status s = feed_.push(beats, count, used);
+        if (s != Status::ok) {
+            open_ = false;
+            return s;
+        }
+        if (feed_.done()) edge_stage_.close();
+        return Status::ok;
+    }
+    bool edge_beats_done() const { return beats_ && feed_.done(); }
 
     // After the last row: PPHT and clustering. not_in_frame if rows are missing, the frame was
     // abandoned or already finished; capacity_exceeded when edges, segments or clusters were
@@ -210,6 +238,7 @@ private:
     SmoothRows<MaxWidth> smooth_;                     // canny: pixels -> smoothed pixels
     GradientStage<MaxWidth, NmsRowKernel> gradient_;  // pixels -> packed NMS rows, no words
     EdgeStage<MaxWidth> edge_stage_;
+    EdgeBeatFeed feed_;  // the frame's edges from the FPGA's beats (push_edge_beats)
     EdgeListStorage<EdgeCapacity, MaxHeight> edges_;
     EdgeList edges_view_ = edges_.view();
     HoughStorage<HoughBins, MaxThetaBins> hough_;
@@ -220,7 +249,8 @@ private:
     LineParams params_;
     LineStats stats_;
     uint16_t width_ = 0, height_ = 0, segment_count_ = 0, line_count_ = 0;
-    bool open_ = false;  // a frame was begun and none of its rows refused
+    bool open_ = false;                       // a frame was begun and none of its rows refused
+    bool beats_ = false, rows_seen_ = false;  // the frame takes edge beats / has taken rows
 };
 
 // QVGA: 320 × 240, 4096 edge points, 2° × 2 px accumulator, 64 segments, 32 lines.

@@ -4,6 +4,7 @@
 //   static qt::BoardDetectorQvga det;
 //   det.begin_frame(320, 240, params);
 //   for each camera row: det.push_row(row, 320);        // or push_gradient_row(words, 320)
+//   (or the FPGA's edge beats: det.push_edge_beats(beats, n, &used), line_detector.h)
 //   det.finish();                              // lines, then quadrangles
 //   det.quads()[0 .. det.quad_count()), best first; det.lines() for the lines stage
 #pragma once
@@ -49,6 +50,11 @@ public:
     Status push_gradient_row(const gradient_word* words, uint16_t width) {
         return lines_.push_gradient_row(words, width);
     }
+    // The frame's edge beats from the FPGA front end instead of rows (line_detector.h).
+    Status push_edge_beats(const uint8_t* beats, uint32_t count, uint32_t* used) {
+        return lines_.push_edge_beats(beats, count, used);
+    }
+    bool edge_beats_done() const { return lines_.edge_beats_done(); }
 
     // After the last row. Errors of the lines stage are returned as they are; otherwise the
     // quadrangles are searched and capacity_exceeded reports a capacity that filled in either

@@ -1,8 +1,9 @@
-# Soak of the gradient block (docs/gradient.md, "Soak"): generates a soak stream with
-# qt_vectors --soak and runs the vector bench on it with random stalls on both sides and the
+# Soak of the FPGA front end (docs/gradient.md, "Soak"): generates a soak stream with
+# qt_vectors --soak and runs the front end's vector bench (tb_front_w640.vvp: edge beats and the
+# gradient link between the blocks both checked) on it with random stalls on both sides and the
 # stream's resets. Used by the ctest tests hdl_soak and hdl_soak_fault and by bench.sh hdl-soak.
 #
-#   cmake -DQT_VECTORS=... -DVVP=... -DBENCH=tb_gradient_w640.vvp -DPREFIX=DIR/name
+#   cmake -DQT_VECTORS=... -DVVP=... -DBENCH=tb_front_w640.vvp -DPREFIX=DIR/name
 #         [-DSEED=1] [-DPIXELS=1050000] [-DSTALL=30] [-DMAX_WIDTH=640] [-DFAULT=1]
 #         -P run_soak.cmake
 #
@@ -34,8 +35,8 @@ endif()
 if(NOT DEFINED MAX_WIDTH)
     set(MAX_WIDTH 640)
 endif()
-set(_depth 2097152)     # tb_gradient DEPTH: beats per vector file
-set(_rdepth 65536)      # tb_gradient RDEPTH: reset points
+set(_depth 2097152)     # tb_front DEPTH: beats per vector file
+set(_rdepth 65536)      # tb_front RDEPTH: reset points
 
 # In fault mode every failure other than the intended one must let the script succeed.
 macro(soak_fail _msg)
@@ -58,7 +59,7 @@ if(NOT _rc EQUAL 0)
     soak_fail("qt_vectors --soak failed (${_rc}): ${_gen}${_gen_err}")
 endif()
 message("${_gen}")
-foreach(_k max_width in_beats out_beats errors resets pixels frames faults)
+foreach(_k max_width threshold in_beats out_beats edge_beats errors resets pixels frames faults)
     if(NOT _gen MATCHES " ${_k}=([0-9]+)")
         soak_fail("cannot read ${_k} from qt_vectors --soak: ${_gen}")
     endif()
@@ -67,12 +68,14 @@ endforeach()
 if(NOT _max_width EQUAL MAX_WIDTH)
     soak_fail("stream assumes MAX_WIDTH ${_max_width}, bench built for ${MAX_WIDTH}")
 endif()
-if(_in_beats GREATER _depth OR _out_beats GREATER _depth OR _resets GREATER _rdepth)
+if(_in_beats GREATER _depth OR _out_beats GREATER _depth OR _edge_beats GREATER _depth OR
+   _resets GREATER _rdepth)
     soak_fail("stream too long for the bench (${_depth} beats, ${_rdepth} resets per run): "
               "use fewer pixels per seed")
 endif()
 
 set(_args +in=${PREFIX}.in.hex +out=${PREFIX}.out.hex +nin=${_in_beats} +nout=${_out_beats}
+          +edges=${PREFIX}.edges.hex +nedges=${_edge_beats} +threshold=${_threshold}
           +errors=${_errors} +resets=${PREFIX}.resets.hex +nresets=${_resets}
           +seed=${SEED} +stall=${STALL})
 
@@ -125,26 +128,29 @@ message("${_tail}")
 
 if(FAULT)
     if(NOT _rc EQUAL 0 AND _out MATCHES "MISMATCH beat=${_beat} [^\n]*\n  the first beat after reset ${_reset}\n")
-        file(REMOVE ${PREFIX}.in.hex ${PREFIX}.out.hex ${PREFIX}.resets.hex)
+        file(REMOVE ${PREFIX}.in.hex ${PREFIX}.out.hex ${PREFIX}.edges.hex ${PREFIX}.resets.hex)
         message(FATAL_ERROR "bench reported the injected mismatch at beat ${_beat}, the first "
                             "after reset ${_reset} (expected)")
     endif()
     soak_fail("bench exit ${_rc}")
 endif()
 
-if(NOT _rc EQUAL 0 OR NOT _out MATCHES "PASS ([0-9]+) beats, ([0-9]+) resets, ([0-9]+) errors, ([0-9]+) cut")
+if(NOT _rc EQUAL 0 OR NOT _out MATCHES "PASS ([0-9]+) beats, ([0-9]+) edge beats, ([0-9]+) resets, ([0-9]+) errors, ([0-9]+) cut")
     message("soak seed=${SEED} pixels=${_pixels} frames=${_frames} resets=${_resets} faults=${_faults} "
             "errors=${_errors} out_beats=${_out_beats} mismatches=FAIL seconds=${_secs}")
     message(FATAL_ERROR "soak failed (bench exit ${_rc}); vector files kept: ${PREFIX}.*.hex")
 endif()
 set(_checked ${CMAKE_MATCH_1})
-set(_cut ${CMAKE_MATCH_4})
-math(EXPR _sum "${_checked} + ${_cut}")
-if(NOT _sum EQUAL _out_beats OR NOT CMAKE_MATCH_2 EQUAL _resets OR NOT CMAKE_MATCH_3 EQUAL _errors)
-    message(FATAL_ERROR "bench counts disagree with the stream: ${_checked} beats checked + ${_cut} "
-                        "cut != ${_out_beats}, or resets/errors differ")
+set(_echecked ${CMAKE_MATCH_2})
+set(_cut ${CMAKE_MATCH_5})
+math(EXPR _sum "${_checked} + ${_echecked} + ${_cut}")
+math(EXPR _expect "${_out_beats} + ${_edge_beats}")
+if(NOT _sum EQUAL _expect OR NOT CMAKE_MATCH_3 EQUAL _resets OR NOT CMAKE_MATCH_4 EQUAL _errors)
+    message(FATAL_ERROR "bench counts disagree with the stream: ${_checked} gradient + ${_echecked} "
+                        "edge beats checked + ${_cut} cut != ${_expect}, or resets/errors differ")
 endif()
 message("soak seed=${SEED} pixels=${_pixels} frames=${_frames} resets=${_resets} faults=${_faults} "
-        "errors=${_errors} out_beats=${_out_beats} checked=${_checked} cut=${_cut} mismatches=0 "
+        "errors=${_errors} out_beats=${_out_beats} edge_beats=${_edge_beats} checked=${_checked} "
+        "edge_checked=${_echecked} cut=${_cut} mismatches=0 "
         "seconds=${_secs}")
-file(REMOVE ${PREFIX}.in.hex ${PREFIX}.out.hex ${PREFIX}.resets.hex)
+file(REMOVE ${PREFIX}.in.hex ${PREFIX}.out.hex ${PREFIX}.edges.hex ${PREFIX}.resets.hex)

@@ -2,10 +2,11 @@
 
 // Direction bin of a gradient (docs/gradient.md, "Direction"), combinational.
 //
-// Split in two parts so that hdl/rtl/gradient.v can put a pipeline register between them:
+// Split in three parts so that hdl/rtl/gradient.v can put pipeline registers between them:
 //   gradient_dir_fold: |gx|, |gy| folded into lo = min, hi = max, swap = (|gy| > |gx|), 3*hi
-//   gradient_dir_bin:  sector compares and quadrant mapping to the bin 0..15
-// gradient_direction is exactly fold followed by bin, so the exhaustive test of
+//   gradient_dir_s51:  the first sector compare (256*lo <= 51*hi) and 19*hi
+//   gradient_dir_bin:  the second compare (256*lo <= 171*hi) and quadrant mapping to the bin
+// gradient_direction is exactly the three in a row, so the exhaustive test of
 // gradient_direction (hdl/bench/tb_direction.v) covers the logic used in the pipeline.
 
 module gradient_dir_fold (
@@ -23,30 +24,43 @@ module gradient_dir_fold (
     wire [7:0] ax = tx[7:0] ^ {8{gx[8]}};   // |v| <= 255 for the specified input range
     wire [7:0] ay = ty[7:0] ^ {8{gy[8]}};
 
+    // 3*|gx| and 3*|gy| beside the compare, one of them chosen: no carry chain after the
+    // compare's.
+    wire [9:0] ax3 = {1'b0, ax, 1'b0} + {2'b0, ax};
+    wire [9:0] ay3 = {1'b0, ay, 1'b0} + {2'b0, ay};
+
     assign swap = (ay > ax);
     assign lo   = swap ? ax : ay;
     assign hi   = swap ? ay : ax;
-    assign hi3  = {1'b0, hi, 1'b0} + {2'b0, hi};
+    assign hi3  = swap ? ay3 : ax3;
 endmodule
 
-module gradient_dir_bin (
-    input  wire [7:0] lo,
-    input  wire [7:0] hi,
-    input  wire [9:0] hi3,           // 3*hi (from gradient_dir_fold, so that a pipeline register
-                                     // between the two splits the product chain)
-    input  wire       swap,
-    input  wire       negx,          // gx < 0
-    input  wire       negy,          // gy < 0
-    output reg  [3:0] dir            // bin 0..15, 22.5 degrees per bin
+module gradient_dir_s51 (
+    input  wire [7:0]  lo,
+    input  wire [7:0]  hi,
+    input  wire [9:0]  hi3,          // 3*hi (from gradient_dir_fold)
+    output wire        le51,         // 256*lo <= 51*hi: sector 0 (implies le171)
+    output wire [12:0] m19           // 19*hi <= 4845, for gradient_dir_bin's 171*hi
 );
     // Products of the rule, factored to share a term (shifts and adds only):
     //   51*hi = 17*(3*hi),  171*hi = 9*(19*hi) with 19*hi = 16*hi + 3*hi.
-    wire [13:0] m51  = {hi3, 4'b0} + {4'b0, hi3};                   // 51*hi  <= 13005
-    wire [12:0] m19  = {1'b0, hi, 4'b0} + {3'b0, hi3};              // 19*hi  <= 4845
-    wire [15:0] m171 = {m19, 3'b0} + {3'b0, m19};                   // 171*hi <= 43605
+    wire [13:0] m51 = {hi3, 4'b0} + {4'b0, hi3};                    // 51*hi  <= 13005
+    assign m19 = {1'b0, hi, 4'b0} + {3'b0, hi3};
 
     // 256*lo <= k*hi  <=>  lo <= floor(k*hi / 256), so only the upper byte is compared.
-    wire le51  = ({2'b0, lo} <= m51[13:8]);      // sector 0 (implies le171)
+    assign le51 = ({2'b0, lo} <= m51[13:8]);
+endmodule
+
+module gradient_dir_bin (
+    input  wire [7:0]  lo,
+    input  wire [12:0] m19,          // 19*hi (gradient_dir_s51)
+    input  wire        le51,
+    input  wire        swap,
+    input  wire        negx,         // gx < 0
+    input  wire        negy,         // gy < 0
+    output reg  [3:0]  dir           // bin 0..15, 22.5 degrees per bin
+);
+    wire [15:0] m171 = {m19, 3'b0} + {3'b0, m19};                   // 171*hi <= 43605
     wire le171 = (lo <= m171[15:8]);             // sector 0 or 1
 
     // bin = s, 8 - s, 8 + s or (16 - s) mod 16 by quadrant, s = sector reflected when swap;
@@ -83,11 +97,13 @@ module gradient_direction (
     input  wire signed [8:0] gy,
     output wire        [3:0] dir
 );
-    wire [7:0] lo, hi;
-    wire       swap;
-    wire [9:0] hi3;
+    wire [7:0]  lo, hi;
+    wire        swap, le51;
+    wire [9:0]  hi3;
+    wire [12:0] m19;
 
     gradient_dir_fold u_fold (.gx(gx), .gy(gy), .lo(lo), .hi(hi), .swap(swap), .hi3(hi3));
-    gradient_dir_bin  u_bin  (.lo(lo), .hi(hi), .hi3(hi3), .swap(swap),
+    gradient_dir_s51  u_s51  (.lo(lo), .hi(hi), .hi3(hi3), .le51(le51), .m19(m19));
+    gradient_dir_bin  u_bin  (.lo(lo), .m19(m19), .le51(le51), .swap(swap),
                               .negx(gx[8]), .negy(gy[8]), .dir(dir));
 endmodule

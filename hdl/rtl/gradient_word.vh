@@ -9,10 +9,12 @@
 `define QT_GW_MAG_BITS 9
 `define QT_GW_DIR_LSB 27
 `define QT_GW_DIR_BITS 4
+`define QT_GW_FILL_BIT 31
 `define QT_VEC_IN_HEIGHT_LSB 10
 `define QT_VEC_IN_TLAST_BIT 9
 `define QT_VEC_IN_TUSER_BIT 8
 `define QT_VEC_IN_BITS 26
 `define QT_VEC_OUT_TLAST_BIT 33
 `define QT_VEC_OUT_TUSER_BIT 32
-`define QT_VEC_OUT_BITS 34
+`define QT_VEC_OUT_EOF_BIT 34
+`define QT_VEC_OUT_BITS 35

@@ -79,11 +79,11 @@ bool parse_beat(const uint8_t* p, Beat& beat) {
     return true;
 }
 
-// One .out.hex line: 9 lower-case hex digits {tlast, tuser, word[31:0]} + '\n', hashed
-// character by character without building the text.
-void hash_out_line(Fnv1a64& hash, qt::gradient_word word, bool tuser, bool tlast) {
+// One .out.hex line: 9 lower-case hex digits {eof, tlast, tuser, word[31:0]} + '\n', hashed
+// character by character without building the text (eof: the frame's last word).
+void hash_out_line(Fnv1a64& hash, qt::gradient_word word, bool tuser, bool tlast, bool eof) {
     static constexpr char kHex[] = "0123456789abcdef";
-    hash.add(static_cast<uint8_t>(kHex[(tlast ? 2u : 0u) | (tuser ? 1u : 0u)]));
+    hash.add(static_cast<uint8_t>(kHex[(eof ? 4u : 0u) | (tlast ? 2u : 0u) | (tuser ? 1u : 0u)]));
     for (int shift = 28; shift >= 0; shift -= 4)
         hash.add(static_cast<uint8_t>(kHex[(word >> shift) & 15u]));
     hash.add('\n');
@@ -110,10 +110,13 @@ Result run_case(const Case& c) {
     for (const uint8_t* p = c.in_begin; p != c.in_end; ++p) hash.add(*p);
 
     uint64_t sink_ticks = 0;
+    uint16_t frame_height = 0;  // rows of the frame in progress
     auto sink = [&](uint16_t y, const qt::gradient_word* words, uint16_t width) {
         const uint64_t t0 = ticks_now();
-        for (uint16_t x = 0; x < width; ++x)
-            hash_out_line(hash, words[x], y == 0 && x == 0, x + 1u == width);
+        for (uint16_t x = 0; x < width; ++x) {
+            const bool last = x + 1u == width;
+            hash_out_line(hash, words[x], y == 0 && x == 0, last, last && y + 1u == frame_height);
+        }
         r.pixels += width;
         sink_ticks += ticks_now() - t0;
     };
@@ -142,6 +145,7 @@ Result run_case(const Case& c) {
         }
         if (start_of_frame) {
             // A frame left open by an earlier failed case is no fault of this one.
+            frame_height = height;
             const qt::Status s = g_stage.begin_frame(length, height);
             const bool leftover = s == qt::Status::previous_frame_incomplete && first_row;
             if (s != qt::Status::ok && !leftover) return failed(r, qt::status_name(s));

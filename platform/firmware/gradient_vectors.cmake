@@ -2,7 +2,8 @@
 #
 # qt_gradient_vector_cases(<dir> <max_width> <out_names> <out_sizes> <out_hashes>)
 # returns, in manifest order, the cases the firmware can check: streams with no framing
-# errors (so torn_stream is left out) whose max_width equals the stage capacity. Sets
+# errors and no resets (so torn_stream and the soak cases are left out) whose max_width equals
+# the stage capacity. Sets
 # <out_names> to "" when there is no manifest. Re-runs CMake when the manifest changes.
 function(qt_gradient_vector_cases dir max_width out_names out_sizes out_hashes)
     set(names "")
@@ -12,19 +13,28 @@ function(qt_gradient_vector_cases dir max_width out_names out_sizes out_hashes)
     if(EXISTS "${manifest}")
         set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${manifest}")
         file(STRINGS "${manifest}" lines)
-        # name sizes frames seed in_beats out_beats errors max_width fnv1a64
-        set(field_re "^([A-Za-z][A-Za-z0-9_]*) ([0-9x+]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9a-f]+)$")
+        # name sizes frames seed in_beats out_beats edge_beats errors resets threshold max_width
+        # fnv1a64 (docs/gradient.md)
+        set(line_re "^[A-Za-z][A-Za-z0-9_]* [0-9a-z+]+( [0-9]+)+ [0-9a-f]+$")
         foreach(line IN LISTS lines)
             if(line STREQUAL "" OR line MATCHES "^#")
                 continue()
             endif()
-            if(NOT line MATCHES "${field_re}")
+            string(REPLACE " " ";" fields "${line}")
+            list(LENGTH fields n)
+            if(NOT line MATCHES "${line_re}" OR NOT n EQUAL 12)
                 message(FATAL_ERROR "${manifest}: malformed line '${line}'")
             endif()
-            if(CMAKE_MATCH_7 EQUAL 0 AND CMAKE_MATCH_8 EQUAL max_width)
-                list(APPEND names "${CMAKE_MATCH_1}")
-                list(APPEND sizes "${CMAKE_MATCH_2}")
-                list(APPEND hashes "${CMAKE_MATCH_9}")
+            list(GET fields 7 errors)
+            list(GET fields 8 resets)
+            list(GET fields 10 width)
+            if(errors EQUAL 0 AND resets EQUAL 0 AND width EQUAL max_width)
+                list(GET fields 0 name)
+                list(GET fields 1 size)
+                list(GET fields 11 hash)
+                list(APPEND names "${name}")
+                list(APPEND sizes "${size}")
+                list(APPEND hashes "${hash}")
             endif()
         endforeach()
     endif()
