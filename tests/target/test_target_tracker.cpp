@@ -740,7 +740,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "The paper's formulation: unseen, x_n = A x_m (equation (11)); without the reset m stays 0 "
+    "The paper's formulation: unseen, x_n = A x_m (equation (11)), and without the reset m stays 0 "
     "and the accumulated error stays (Fig. 12)",
     "[target][fig12]") {
     for (const bool reset : {true, false}) {
