@@ -25,6 +25,10 @@ struct Qvga {
     static constexpr int patch_radius = 4;
     static constexpr uint8_t max_template = 16;
     static constexpr uint16_t max_region = 84;
+    // The work window of the morphological detector (the paper's Table III step 2, an option
+    // beside the NCC template), px a side: 12 192 B of RAM at 84. 0 leaves the detector out of the
+    // build (firmware that uses the template), and asking for it is then Status::not_in_build.
+    static constexpr uint16_t morph_region = 84;
 };
 
 struct Vga : Qvga {

@@ -12,6 +12,7 @@ const char* status_name(Status s) {
         case Status::capacity_exceeded: return "capacity exceeded (results incomplete)";
         case Status::bad_row_order: return "rows out of order";
         case Status::bad_stream: return "edge beats broken off or not fitting the frame";
+        case Status::not_in_build: return "option left out of this build's capacity";
     }
     return "unknown status";
 }

@@ -18,6 +18,8 @@ enum class Status : uint8_t {
                                 // a gradient row before its pixel row, or too far behind it)
     bad_stream,                 // the FPGA's edge beats report the frame broken off, or do not
                                 // fit it (lines/edge_beat.h)
+    not_in_build,               // the parameters ask for an option the build's capacity leaves
+                                // out (base/capacity.h: morph_region 0)
 };
 
 // Short English name for logs and CLI messages.

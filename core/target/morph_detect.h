@@ -227,4 +227,13 @@ private:
     int32_t wx0_ = 0, wy0_ = 0, w_ = 0, h_ = 0;
 };
 
+// Stands in for MorphDetector in a build whose capacity leaves it out (morph_region 0):
+// nothing stored, nothing found. TargetPipeline refuses the morphological option first.
+struct MorphDetectorLeftOut {
+    MorphDetection detect(const PixelRegion&, int32_t, int32_t, uint16_t, Polarity,
+                          const MorphParams&) const {
+        return MorphDetection{};
+    }
+};
+
 }  // namespace qt

@@ -75,9 +75,9 @@ class RegionCapture {
 public:
     // Keeps [x0, x0 + w) × [y0, y0 + h) clipped to the frame (and to MaxW × MaxH around the
     // requested box's centre). An empty intersection keeps nothing.
-    void begin(int32_t x0, int32_t y0, int32_t w, int32_t h, uint16_t frame_w, uint16_t frame_h) {
-        // In 64 bits: the box may lie anywhere in int32 (TargetPipeline::set_target takes any
-        // position), and its far ends beyond.
+    // Arguments in 64 bits: the box may lie anywhere in int32 (TargetPipeline::set_target takes
+    // any position), and its margins and far ends beyond.
+    void begin(int64_t x0, int64_t y0, int64_t w, int64_t h, uint16_t frame_w, uint16_t frame_h) {
         int64_t left = x0, top = y0, width = w, height = h;
         if (width > MaxW) {
             left += (width - MaxW) / 2;

@@ -64,7 +64,7 @@ constexpr uint16_t kWidth = 320, kHeight = 240;  // BoardDetectorQvga's capacity
 // The aims of the budget: instructions per QVGA frame for the whole chain (200
 // frames/s on a 480 MHz part at one instruction per cycle), RAM including the stack, flash.
 constexpr uint64_t kAimInstructions = 2400000;
-constexpr uint32_t kAimRamBytes = 64 * 1024, kAimFlashBytes = 64 * 1024;
+constexpr uint32_t kAimRamBytes = 64 * 1024, kAimFlashBytes = 128 * 1024;
 
 // --- PGM parser checks -----------------------------------------------------------------------
 // The parser against small headers, good and bad: (text, accepted?).
@@ -312,7 +312,7 @@ int main() {
     sh_write(ram_used <= kAimRamBytes ? "met" : "NOT met");
     sh_write(" (<= 65536 B with the stack), flash ");
     sh_write(flash <= kAimFlashBytes ? "met" : "NOT met");
-    sh_write(" (<= 65536 B)\n");
+    sh_write(" (<= 131072 B)\n");
 
     // Painted words left at the bottom of the stack: fewer than this and the stack may have
     // overflowed into .bss unnoticed.

@@ -93,3 +93,54 @@ TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-
     INFO("filter only: out " << k.out << ", after " << k.after);
     CHECK(k.after > 20.0);
 }
+
+namespace {
+
+// QVGA without the morphological detector, as the Cortex-M4F firmware builds it.
+struct QvgaTemplateOnly : qt::Qvga {
+    static constexpr uint16_t morph_region = 0;
+};
+
+template <class Pipeline>
+qt::Status run_frame(Pipeline& p, const qt::io::GreyImage& image,
+                     const qt::TargetPipelineParams& params, qt::TargetFrame& out) {
+    const auto w = static_cast<uint16_t>(image.width), h = static_cast<uint16_t>(image.height);
+    const qt::Status s = p.begin_frame(w, h, params);
+    if (s != qt::Status::ok) return s;
+    for (int y = 0; y < image.height; ++y) p.push_row(image.row(y), w);
+    return p.finish(out);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "target pipeline without the morphological detector: the template's results, "
+    "12 kB less RAM, the detector refused",
+    "[target][capacity]") {
+    static qt::TargetPipelineQvga full;
+    static qt::TargetPipeline<QvgaTemplateOnly> slim;
+    STATIC_REQUIRE(sizeof slim + 12000 <= sizeof full);  // the detector: 84 x 84 B and its runs
+
+    const qt::scene::GroundSequenceConfig cfg = qt::scene::short_ground_sequence();
+    const qt::scene::GroundSequence seq(cfg);
+    const qt::cli::TargetBox box = qt::cli::start_box(seq.truth(0));
+    const auto side = static_cast<uint8_t>(box.side);
+    REQUIRE(full.set_target(box.x, box.y, side, side) == qt::Status::ok);
+    REQUIRE(slim.set_target(box.x, box.y, side, side) == qt::Status::ok);
+    const qt::TargetPipelineParams ncc;  // the default detector: the NCC template
+    qt::TargetPipelineParams morph;
+    morph.detector = qt::TargetDetector::morphological;
+    for (int k = 0; k < 24; ++k) {
+        const qt::io::GreyImage image = seq.render(k);
+        qt::TargetFrame a, b;
+        if (k == 12) {  // refused without a trace: no frame begun, the track as it was
+            CHECK(run_frame(slim, image, morph, b) == qt::Status::not_in_build);
+            CHECK(slim.finish(b) == qt::Status::not_in_frame);
+        }
+        REQUIRE(run_frame(full, image, ncc, a) == run_frame(slim, image, ncc, b));
+        INFO("frame " << k);
+        CHECK(a.estimate.state == b.estimate.state);
+        CHECK(a.estimate.x == b.estimate.x);
+        CHECK(a.estimate.y == b.estimate.y);
+    }
+}

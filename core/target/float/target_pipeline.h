@@ -12,6 +12,8 @@
 #pragma once
 #include <stdint.h>
 
+#include <type_traits>
+
 #include "base/capacity.h"
 #include "base/status.h"
 #include "gradient/gradient_stage.h"
@@ -82,6 +84,10 @@ class TargetPipeline {
     static constexpr int PatchRadius = Capacity::patch_radius;
     static constexpr uint8_t MaxTemplate = Capacity::max_template;
     static constexpr uint16_t MaxRegion = Capacity::max_region;
+    static constexpr uint16_t MorphRegion = Capacity::morph_region;
+    using Morph =
+        typename std::conditional<(MorphRegion > 0), MorphDetector<MorphRegion, MorphRegion>,
+                                  MorphDetectorLeftOut>::type;
 
 public:
     using Features = FeatureSet<PatchRadius, MaxFeatures>;
@@ -106,9 +112,13 @@ public:
     // above capacity; previous_frame_incomplete when rows of the frame in progress were missing
     // (the new frame has started all the same). A refused or torn frame leaves no trace: the
     // next complete frame is matched to the last complete one and the track is as it was.
+    // not_in_build (and no frame) when params ask for the morphological detector and the
+    // capacity leaves it out (morph_region 0).
     Status begin_frame(uint16_t width, uint16_t height, const TargetPipelineParams& params) {
         const bool abandoned = open_ && y_ < height_;
         open_ = false;
+        if (MorphRegion == 0 && params.detector == TargetDetector::morphological)
+            return Status::not_in_build;
         params_ = params;
         Status s = gradient_.begin_frame(width, height);
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
@@ -121,9 +131,8 @@ public:
         if (pending_target_) {
             // The box and a margin around it (the morphological detector's opening needs the
             // target's surroundings).
-            constexpr int32_t m = MaxTemplate / 2 + 2;
-            capture_.begin(roi_x_ - m, roi_y_ - m, int32_t{roi_w_} + 2 * m, int32_t{roi_h_} + 2 * m,
-                           width, height);
+            constexpr int64_t m = MaxTemplate / 2 + 2;
+            capture_.begin(roi_x_ - m, roi_y_ - m, roi_w_ + 2 * m, roi_h_ + 2 * m, width, height);
         } else if (tracking_) {
             const SearchWindow e = tracker_.expected();
             const int32_t half = static_cast<int32_t>(params_.tracker.max_radius_px >
@@ -131,8 +140,8 @@ public:
                                                           ? params_.tracker.max_radius_px
                                                           : params_.tracker.template_radius_px) +
                                  params_.capture_margin_px + MaxTemplate / 2 + 1;
-            capture_.begin(static_cast<int32_t>(e.x) - half, static_cast<int32_t>(e.y) - half,
-                           2 * half + 1, 2 * half + 1, width, height);
+            capture_.begin(clamped_px(e.x) - half, clamped_px(e.y) - half, 2 * half + 1,
+                           2 * half + 1, width, height);
         } else {
             capture_.begin(0, 0, 0, 0, width, height);
         }
@@ -264,6 +273,15 @@ public:
     const TargetTracker& tracker() const { return tracker_; }
 
 private:
+    // A position in px as an integer for the capture window, truncated toward zero; beyond
+    // ±1e9 px (and NaN, as -1e9) the window misses every frame alike, so it is held there
+    // rather than converted out of range.
+    static int64_t clamped_px(float v) {
+        constexpr float far_px = 1.0e9f;
+        if (v > far_px) return static_cast<int64_t>(far_px);
+        if (v > -far_px) return static_cast<int64_t>(v);
+        return -static_cast<int64_t>(far_px);
+    }
     static int16_t clamp16(float v) {
         return static_cast<int16_t>(v < -32000.0f ? -32000.0f : v > 32000.0f ? 32000.0f : v);
     }
@@ -327,7 +345,7 @@ private:
     RegionCapture<MaxRegion, MaxRegion> capture_;
     TargetTemplate<MaxTemplate> template_;
     TargetTracker tracker_;
-    MorphDetector<MaxRegion, MaxRegion> morph_detector_;
+    Morph morph_detector_;
     MorphParams morph_;
     Polarity polarity_ = Polarity::bright;
     Homography last_h_;
