@@ -167,7 +167,7 @@ run_bench() {
             host_build bench_target
             "$b/bench_target" --out bench_out/target ;;
         gradient-m4)
-            run_firmware cortex-m4 mps2-an386 gradient_bench ;;
+            run_firmware cortex-m4 mps2-an386 gradient_bench 2>&1 ;;
         budgets)
             run_firmware cortex-m4 mps2-an386 chain_bench 2>&1 | grep -E '^(budget|work|chain:|FAIL)' ;;
         budgets-m3)
@@ -179,7 +179,7 @@ run_bench() {
         budget-table)
             budget_table ;;
         track-m4)
-            run_firmware cortex-m4 mps2-an386 track_bench ;;
+            run_firmware cortex-m4 mps2-an386 track_bench 2>&1 ;;
         soak)
             ensure_packages cmake make g++ catch2
             cmake --preset host-sanitize >/dev/null
