@@ -20,15 +20,16 @@ import argparse, glob, os, re, subprocess, sys
 # The chain cases of chain_bench and the kind of frame each is.
 KINDS = [("board_motion_qvga", "board"), ("clutter_qvga", "clutter"),
          ("photos_qvga", "real photograph")]
-FRAME_RE = re.compile(r"^budget (\S+)((?: \w+=\d+)+)$")
+FRAME_RE = {head: re.compile(r"^%s (\S+)((?: \w+=\d+)+)$" % head) for head in ("budget", "fpga")}
 
 
-def frames_of(path):
-    """[(frame name, {stage: instructions})] in printed order, per-frame lines only."""
+def frames_of(path, head="budget"):
+    """[(frame name, {stage: instructions})] in printed order, per-frame lines only; head
+    "fpga": the chain's frames with edges from the FPGA."""
     out = []
     with open(path) as f:
         for line in f:
-            m = FRAME_RE.match(line.strip())
+            m = FRAME_RE[head].match(line.strip())
             if not m or m.group(1) in ("memory", "median", "worst"):
                 continue
             stages = {}
@@ -121,6 +122,34 @@ def main():
     verdict = "met" if worst_all <= 2400000 else "NOT met"
     print("Worst single QVGA frame of the quadrangle chain over every part and case: %d "
           "instructions (aim 2400000: %s)" % (worst_all, verdict))
+    print()
+
+    print("The same frames with edges from the FPGA (chain_bench's second pass: the front end's "
+          "edge beats through push_edge_beats, results equal to the camera rows'); 'after the "
+          "edges' is the total less beats: PPHT, clustering, rules and tracker (aim on board "
+          "frames: <= 800 000):")
+    print()
+    rows, board_rest = [], {}
+    for part, path in parts(args.chain):
+        frames = frames_of(path, "fpga")
+        for case, kind in KINDS:
+            mine = [f for f in frames if f[0].startswith(case + "_")]
+            if not mine:
+                sys.exit("budget_table: no fpga frame of %s in %s" % (case, path))
+            stages, med, worst, wf = summary(mine)
+            rest = [f[1]["total"] - f[1]["beats"] for f in mine]
+            rows.append([part, kind, len(mine), "median"] + [med[s] for s in stages] +
+                        [med["total"], sorted(rest)[len(rest) // 2]])
+            rows.append([part, kind, len(mine), "worst"] + [worst[s] for s in stages] +
+                        [worst["total"], max(rest)])
+            if kind == "board":
+                board_rest[part] = (sorted(rest)[len(rest) // 2], max(rest))
+    table(["part", "kind of frame", "frames", "statistic"] + stages + ["total", "after the edges"],
+          rows)
+    for part, (med, worst) in board_rest.items():
+        print("%s, board frames with edges from the FPGA, after the edges: median %d, worst %d "
+              "instructions (aim 800000: %s)" % (part, med, worst,
+                                                 "met" if worst <= 800000 else "NOT met"))
     print()
 
     for part, path in parts(args.target):

@@ -15,6 +15,12 @@
 // A "work" line per frame gives what the stages worked on: edge points, points that voted in
 // PPHT, votes cast, bins followed, segments, parallel pairs, pair combinations tried.
 //
+// Then the chain again with edges from the FPGA: each frame's edge beats (the front end's, from
+// hw_model's model of hdl/rtl/frontend.v, written at build time) pushed in one
+// push_edge_beats call, as from a DMA buffer, instead of the camera rows; its result text must
+// equal the camera rows' frame for frame. "fpga" lines give its instructions per frame and stage
+// (beats: push_edge_beats, the edge list's inserts; then as above), median and worst.
+//
 // Instructions come from SysTick ticks, 40 instructions each under -icount shift=0
 // (cycle_counter.h); a reading is quantised to 40 and includes one ticks_now() call. Stages:
 //   rows     the frame's push_row calls, each timed: gradient, non-maximum suppression and
@@ -27,8 +33,11 @@
 #include <stdint.h>
 #include <string.h>
 
+#include <new>  // placement new: a fresh tracker in place, no 2 KiB temporary on the stack
+
 #include "api/result_text.h"
 #include "cycle_counter.h"
+#include "lines/edge_beat.h"
 #include "pgm_view.h"
 #include "quads/board_detector.h"
 #include "semihosting.h"
@@ -39,8 +48,10 @@ namespace {
 
 struct ChainFrame {
     const char* name;
-    const uint8_t* begin;
+    const uint8_t* begin;  // the PGM file
     const uint8_t* end;
+    const uint8_t* beats_begin;  // the FPGA front end's edge beats (lines/edge_beat.h)
+    const uint8_t* beats_end;
 };
 
 struct ChainCase {
@@ -117,6 +128,10 @@ alignas(4) uint8_t g_line[kWidth];  // the camera's line buffer
 
 enum Stage : unsigned { kRows, kHough, kCluster, kQuads, kTrack, kStages };
 constexpr const char* kStageNames[kStages] = {"rows", "hough", "cluster", "quads", "track"};
+constexpr const char* kFpgaStageNames[kStages] = {"beats", "hough", "cluster", "quads", "track"};
+
+// Where a frame's edges come from.
+enum class Input { camera_rows, fpga_beats };
 
 // What the stages worked on, for reading the instruction counts.
 enum Work : unsigned {
@@ -149,18 +164,34 @@ void print_field(const char* name, uint64_t value) {
     sh_dec(value);
 }
 
-// "budget <prefix><name> rows=... total=..."
-void print_instructions(const char* prefix, const char* name, const Instructions& n) {
-    sh_write("budget ");
+// "budget <prefix><name> rows=... total=..." ("fpga <prefix><name> beats=... total=..." for
+// the frames with edges from the FPGA).
+void print_instructions(const char* prefix, const char* name, const Instructions& n,
+                        Input input = Input::camera_rows) {
+    const bool fpga = input == Input::fpga_beats;
+    sh_write(fpga ? "fpga " : "budget ");
     sh_write(prefix);
     sh_write(name);
-    for (unsigned s = 0; s < kStages; ++s) print_field(kStageNames[s], n.stage[s]);
+    for (unsigned s = 0; s < kStages; ++s)
+        print_field(fpga ? kFpgaStageNames[s] : kStageNames[s], n.stage[s]);
     print_field("total", n.total());
     sh_write("\n");
 }
 
-// One frame through the chain, timed; its text printed. Returns an error or nullptr.
-const char* run_frame(const ChainFrame& frame, bool& frame_open, Instructions& n) {
+// FNV-1a, 64 bits: a frame's result text, to compare the two inputs' texts.
+uint64_t fnv1a(uint64_t h, const char* text, size_t length) {
+    for (size_t i = 0; i < length; ++i) {
+        h ^= static_cast<uint8_t>(text[i]);
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
+constexpr uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
+
+// One frame through the chain, timed; its text printed (camera rows only) and hashed into
+// text_hash. Returns an error or nullptr.
+const char* run_frame(const ChainFrame& frame, Input input, bool& frame_open, Instructions& n,
+                      uint64_t& text_hash) {
     const Pgm pgm = parse_pgm(frame.begin, frame.end, kWidth, kHeight);
     if (pgm.error != nullptr) return pgm.error;
     // A frame left open by an earlier failed one is no fault of this one.
@@ -169,17 +200,28 @@ const char* run_frame(const ChainFrame& frame, bool& frame_open, Instructions& n
     if (s != qt::Status::ok) return qt::status_name(s);
     frame_open = true;
 
-    // Each row is first copied into a word-aligned line buffer, untimed: a camera interface's
-    // DMA does that without the CPU. Only push_row is timed.
-    const uint8_t* row = pgm.raster;
-    uint64_t rows_ticks = 0;
-    for (uint16_t y = 0; y < pgm.height && s == qt::Status::ok; ++y, row += pgm.width) {
-        memcpy(g_line, row, pgm.width);
+    if (input == Input::camera_rows) {
+        // Each row is first copied into a word-aligned line buffer, untimed: a camera
+        // interface's DMA does that without the CPU. Only push_row is timed.
+        const uint8_t* row = pgm.raster;
+        uint64_t rows_ticks = 0;
+        for (uint16_t y = 0; y < pgm.height && s == qt::Status::ok; ++y, row += pgm.width) {
+            memcpy(g_line, row, pgm.width);
+            const uint64_t t0 = ticks_now();
+            s = g_det.push_row(g_line, pgm.width);
+            rows_ticks += ticks_now() - t0;
+        }
+        n.stage[kRows] = ticks_to_instructions(rows_ticks);
+    } else {
+        const uint32_t count =
+            static_cast<uint32_t>(frame.beats_end - frame.beats_begin) / qt::eb::kBytes;
+        uint32_t used = 0;
         const uint64_t t0 = ticks_now();
-        s = g_det.push_row(g_line, pgm.width);
-        rows_ticks += ticks_now() - t0;
+        s = g_det.push_edge_beats(frame.beats_begin, count, &used);
+        n.stage[kRows] = ticks_to_instructions(ticks_now() - t0);
+        if (s == qt::Status::ok && (used != count || !g_det.edge_beats_done()))
+            return "the edge beats did not end with the frame's trailer";
     }
-    n.stage[kRows] = ticks_to_instructions(rows_ticks);
     if (s != qt::Status::ok) return qt::status_name(s);
 
     uint64_t t = ticks_now(), now = t;
@@ -200,8 +242,12 @@ const char* run_frame(const ChainFrame& frame, bool& frame_open, Instructions& n
                                                  g_det.quads(), g_det.quad_count());
     n.stage[kTrack] = ticks_to_instructions(ticks_now() - t);
 
+    text_hash = kFnvBasis;
     qt::write_frame_text(frame.name, g_det, status, track, g_tracker.stats().lost_reason,
-                         [](const char* text, size_t) { sh_write(text); });
+                         [&](const char* text, size_t length) {
+                             if (input == Input::camera_rows) sh_write(text);
+                             text_hash = fnv1a(text_hash, text, length);
+                         });
     const qt::LineStats& ls = g_det.lines().stats();
     n.work[kEdges] = ls.edges;
     n.work[kVoters] = ls.hough.points_visited;
@@ -249,9 +295,11 @@ int main() {
     g_tracker.set_params(qt::default_quad_tracker_params(kWidth, kHeight));
     unsigned failures = 0;
     bool frame_open = false;
-    Instructions worst[sizeof kChainCases / sizeof kChainCases[0]];
-    Instructions per_frame[kMaxCaseFrames];
-    for (unsigned c = 0; c < sizeof kChainCases / sizeof kChainCases[0]; ++c) {
+    constexpr unsigned kCases = sizeof kChainCases / sizeof kChainCases[0];
+    Instructions worst[kCases];
+    static Instructions per_frame[kMaxCaseFrames];      // static: the stack is held to 4 KiB
+    static uint64_t text_hash[kCases][kMaxCaseFrames];  // the camera rows' result texts
+    for (unsigned c = 0; c < kCases; ++c) {
         const ChainCase& chain = kChainCases[c];
         g_tracker.reset();  // as the host's chain_texts(): track ids run on across cases
         sh_write("=== chain ");
@@ -259,7 +307,8 @@ int main() {
         sh_write("\n");
         for (unsigned f = 0; f < chain.count; ++f) {
             per_frame[f] = Instructions{};
-            const char* error = run_frame(chain.frames[f], frame_open, per_frame[f]);
+            const char* error = run_frame(chain.frames[f], Input::camera_rows, frame_open,
+                                          per_frame[f], text_hash[c][f]);
             if (error != nullptr) {
                 ++failures;
                 sh_write("FAIL ");
@@ -288,10 +337,50 @@ int main() {
 
     // Worst frame of each case, stage by stage (the stages' worst frames may differ).
     uint64_t worst_total = 0;
-    for (unsigned c = 0; c < sizeof kChainCases / sizeof kChainCases[0]; ++c) {
+    for (unsigned c = 0; c < kCases; ++c) {
         print_instructions("worst ", kChainCases[c].name, worst[c]);
         if (worst[c].total() > worst_total) worst_total = worst[c].total();
     }
+
+    // The same frames with edges from the FPGA: the same texts, and what the rest costs. A new
+    // tracker, as the first pass had: track ids run on from case to case.
+    unsigned fpga_frames = 0, fpga_equal = 0;
+    new (&g_tracker) qt::QuadTracker(qt::default_quad_tracker_params(kWidth, kHeight));
+    for (unsigned c = 0; c < kCases; ++c) {
+        const ChainCase& chain = kChainCases[c];
+        g_tracker.reset();
+        Instructions fpga_worst;
+        for (unsigned f = 0; f < chain.count; ++f) {
+            per_frame[f] = Instructions{};
+            uint64_t hash = 0;
+            const char* error =
+                run_frame(chain.frames[f], Input::fpga_beats, frame_open, per_frame[f], hash);
+            ++fpga_frames;
+            if (error == nullptr && hash == text_hash[c][f]) {
+                ++fpga_equal;
+            } else {
+                ++failures;
+                sh_write("FAIL fpga ");
+                sh_write(chain.frames[f].name);
+                sh_write(": ");
+                sh_write(error != nullptr ? error : "result text differs from the camera rows'");
+                sh_write("\n");
+            }
+            print_instructions("", chain.frames[f].name, per_frame[f], Input::fpga_beats);
+            for (unsigned s = 0; s < kStages; ++s)
+                if (per_frame[f].stage[s] > fpga_worst.stage[s])
+                    fpga_worst.stage[s] = per_frame[f].stage[s];
+        }
+        if (chain.count > 1)
+            print_instructions("median ", chain.name, median_of(per_frame, chain.count),
+                               Input::fpga_beats);
+        print_instructions("worst ", chain.name, fpga_worst, Input::fpga_beats);
+    }
+    sh_write("fpga: ");
+    sh_dec(fpga_equal);
+    sh_write(" of ");
+    sh_dec(fpga_frames);
+    sh_write(" frames with edges from the FPGA give the camera rows' result text\n");
 
     const uint32_t flash = static_cast<uint32_t>(__flash_end - __flash_start);
     const uint32_t frames = static_cast<uint32_t>(__frames_end - __frames_start);
