@@ -36,6 +36,7 @@
 #include <new>  // placement new: a fresh tracker in place, no 2 KiB temporary on the stack
 
 #include "api/result_text.h"
+#include "camera_rows.h"
 #include "cycle_counter.h"
 #include "lines/edge_beat.h"
 #include "pgm_view.h"
@@ -201,17 +202,9 @@ const char* run_frame(const ChainFrame& frame, Input input, bool& frame_open, In
     frame_open = true;
 
     if (input == Input::camera_rows) {
-        // Each row is first copied into a word-aligned line buffer, untimed: a camera
-        // interface's DMA does that without the CPU. Only push_row is timed.
-        const uint8_t* row = pgm.raster;
-        uint64_t rows_ticks = 0;
-        for (uint16_t y = 0; y < pgm.height && s == qt::Status::ok; ++y, row += pgm.width) {
-            memcpy(g_line, row, pgm.width);
-            const uint64_t t0 = ticks_now();
-            s = g_det.push_row(g_line, pgm.width);
-            rows_ticks += ticks_now() - t0;
-        }
-        n.stage[kRows] = ticks_to_instructions(rows_ticks);
+        n.stage[kRows] = push_camera_rows(pgm, g_line, s, [](const uint8_t* line, uint16_t w) {
+            return g_det.push_row(line, w);
+        });
     } else {
         const uint32_t count =
             static_cast<uint32_t>(frame.beats_end - frame.beats_begin) / qt::eb::kBytes;

@@ -22,6 +22,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "camera_rows.h"
 #include "cycle_counter.h"
 #include "pgm_view.h"
 #include "semihosting.h"
@@ -112,15 +113,9 @@ const char* run_frame(const TargetFrameBlob& frame, Instructions& n) {
     const Pgm pgm = parse_pgm(frame.begin, frame.end, kWidth, kHeight);
     if (pgm.error != nullptr) return pgm.error;
     qt::Status s = g_pipeline.begin_frame(pgm.width, pgm.height, qt::TargetPipelineParams{});
-    const uint8_t* row = pgm.raster;
-    uint64_t rows_ticks = 0;
-    for (uint16_t y = 0; y < pgm.height && s == qt::Status::ok; ++y, row += pgm.width) {
-        memcpy(g_line, row, pgm.width);
-        const uint64_t t0 = ticks_now();
-        s = g_pipeline.push_row(g_line, pgm.width);
-        rows_ticks += ticks_now() - t0;
-    }
-    n.stage[kRows] = ticks_to_instructions(rows_ticks);
+    n.stage[kRows] = push_camera_rows(pgm, g_line, s, [](const uint8_t* line, uint16_t w) {
+        return g_pipeline.push_row(line, w);
+    });
 
     qt::TargetFrame f;
     if (s == qt::Status::ok) {
