@@ -168,6 +168,7 @@ struct Run {
     uint32_t last_track_id = 0;
     bool tracker_active = false;
     bool target_pending = false;
+    bool target_captured = false;  // the frame in progress began with the box pending
     int32_t box_x = 0, box_y = 0;
     uint8_t box_w = 0, box_h = 0;
     uint32_t pixels_left = kPixelBudget;
@@ -409,7 +410,8 @@ struct Run {
         const bool refuse = w == 0 || h == 0 || w > 16 || h > 16;
         QT_FUZZ_CHECK(s == (refuse ? Status::bad_size : Status::ok));
         if (!refuse) {
-            target_pending = true;
+            target_pending = true;  // from the next frame begun
+            target_captured = false;
             box_x = x;
             box_y = y;
             box_w = w;
@@ -434,6 +436,7 @@ struct Run {
         tm.state = FrameModel::in_frame;
         tm.w = w;
         tm.h = h;
+        target_captured = target_pending;
     }
 
     void target_rows(uint8_t count, uint8_t lenmode) {
@@ -469,8 +472,8 @@ struct Run {
             QT_FUZZ_CHECK(s == Status::not_in_frame);  // rows missing: the frame goes on
             return;
         }
-        const bool was_pending = target_pending;
-        target_pending = false;
+        const bool was_pending = target_pending && target_captured;
+        if (was_pending) target_pending = false;
         tm = FrameModel{};
         if (was_pending) {
             const bool inside = box_x >= 0 && box_y >= 0 && int64_t{box_x} + box_w <= fw &&

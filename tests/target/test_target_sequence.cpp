@@ -144,3 +144,34 @@ TEST_CASE(
         CHECK(a.estimate.y == b.estimate.y);
     }
 }
+
+TEST_CASE("target pipeline: set_target while a frame is open starts at the next frame",
+          "[target]") {
+    static qt::TargetPipelineQvga p;
+    const qt::scene::GroundSequence seq(qt::scene::short_ground_sequence());
+    const qt::cli::TargetBox box = qt::cli::start_box(seq.truth(0));
+    const auto side = static_cast<uint8_t>(box.side);
+    const qt::TargetPipelineParams params;
+    qt::TargetFrame out;
+    REQUIRE(p.set_target(box.x, box.y, side, side) == qt::Status::ok);
+    REQUIRE(run_frame(p, seq.render(0), params, out) == qt::Status::ok);
+    REQUIRE(out.started);
+
+    // Frame 1: the new box is given after half the rows; the frame goes on with the old track.
+    const qt::io::GreyImage image = seq.render(1);
+    const auto w = static_cast<uint16_t>(image.width);
+    REQUIRE(p.begin_frame(w, static_cast<uint16_t>(image.height), params) == qt::Status::ok);
+    for (int y = 0; y < image.height; ++y) {
+        if (y == image.height / 2)
+            REQUIRE(p.set_target(box.x + 4, box.y + 4, side, side) == qt::Status::ok);
+        REQUIRE(p.push_row(image.row(y), w) == qt::Status::ok);
+    }
+    CHECK(p.finish(out) == qt::Status::ok);
+    CHECK_FALSE(out.started);
+    CHECK(out.tracking);
+
+    // Frame 2 starts the new box.
+    REQUIRE(run_frame(p, seq.render(2), params, out) == qt::Status::ok);
+    CHECK(out.started);
+    CHECK(out.estimate.x == Approx(box.x + 4 + 0.5 * (side - 1)));
+}

@@ -95,9 +95,11 @@ public:
     // The parameters of the frame begun last.
     const TargetPipelineParams& params() const { return params_; }
 
-    // Starts (or restarts) tracking at the next frame: the template is that frame's w × h
-    // pixels with top-left (x, y), px; the target's centre is the box's centre. bad_size when
-    // w or h is 0 or above MaxTemplate (the box is checked against the frame at finish()).
+    // Starts (or restarts) tracking at the next frame begun: the template is that frame's w × h
+    // pixels with top-left (x, y), px; the target's centre is the box's centre. Called while a
+    // frame is open, that frame goes on as before (its rows are not being kept for the box).
+    // bad_size when w or h is 0 or above MaxTemplate (the box is checked against the frame at
+    // finish()).
     Status set_target(int32_t x, int32_t y, uint8_t w, uint8_t h) {
         if (w == 0 || h == 0 || w > MaxTemplate || h > MaxTemplate) return Status::bad_size;
         roi_x_ = x;
@@ -105,6 +107,7 @@ public:
         roi_w_ = w;
         roi_h_ = h;
         pending_target_ = true;
+        target_captured_ = false;
         return Status::ok;
     }
 
@@ -128,6 +131,7 @@ public:
         height_ = height;
         y_ = 0;
         open_ = true;
+        target_captured_ = pending_target_;
         if (pending_target_) {
             // The box and a margin around it (the morphological detector's opening needs the
             // target's surroundings).
@@ -205,7 +209,7 @@ public:
             g.d_rep_capped_px = out.geometry.ransac.d_rep_capped_px;
             if (g.valid) last_h_ = g.h;
         }
-        if (pending_target_) {
+        if (pending_target_ && target_captured_) {
             pending_target_ = false;
             const PixelRegion& r = capture_.region();
             if (!cut_template(r, roi_x_, roi_y_, roi_w_, roi_h_, template_)) {
@@ -354,6 +358,7 @@ private:
     bool open_ = false;  // a frame was begun and none of its rows refused
     bool tracking_ = false;
     bool pending_target_ = false;
+    bool target_captured_ = false;  // this frame's rows are kept around the pending box
     int32_t offset_x_q8_ = 0, offset_y_q8_ = 0;  // target centre − template centre, 1/256 px
     int32_t roi_x_ = 0, roi_y_ = 0;
     uint8_t roi_w_ = 0, roi_h_ = 0;
