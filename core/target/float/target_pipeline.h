@@ -286,11 +286,14 @@ private:
         if (v > -far_px) return static_cast<int64_t>(v);
         return -static_cast<int64_t>(far_px);
     }
+    // A match offset, px, held to ±32 000; NaN (no offset known) is 0, never converted.
     static int16_t clamp16(float v) {
+        if (v != v) return 0;
         return static_cast<int16_t>(v < -32000.0f ? -32000.0f : v > 32000.0f ? 32000.0f : v);
     }
+    // A window centre, px, rounded and held to ±1e6 (NaN: -1e6, outside every frame).
     static int32_t round_px(float v) {
-        const float c = v < -1.0e6f ? -1.0e6f : v > 1.0e6f ? 1.0e6f : v;
+        const float c = !(v >= -1.0e6f) ? -1.0e6f : v > 1.0e6f ? 1.0e6f : v;
         return static_cast<int32_t>(c < 0 ? c - 0.5f : c + 0.5f);
     }
     // Cuts the template again centred as near as whole pixels allow on the target centre
