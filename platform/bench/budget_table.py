@@ -40,6 +40,17 @@ def frames_of(path, head="budget"):
     return out
 
 
+def chain_cases(chains, head):
+    """(part, kind of frame, [its frames]) for every part and kind of chain_bench's output."""
+    for part, path in parts(chains):
+        frames = frames_of(path, head)
+        for case, kind in KINDS:
+            mine = [f for f in frames if f[0].startswith(case + "_")]
+            if not mine:
+                sys.exit("budget_table: no %s frame of %s in %s" % (head, case, path))
+            yield part, kind, mine
+
+
 def summary(frames):
     """Per-stage upper median, per-stage worst, worst single-frame total."""
     stages = [k for k in frames[0][1] if k != "total"]
@@ -105,18 +116,13 @@ def main():
     print()
     rows, stages = [], None
     worst_all = 0
-    for part, path in parts(args.chain):
-        frames = frames_of(path)
-        for case, kind in KINDS:
-            mine = [f for f in frames if f[0].startswith(case + "_")]
-            if not mine:
-                sys.exit("budget_table: no frame of %s in %s" % (case, path))
-            stages, med, worst, wf = summary(mine)
-            worst_all = max(worst_all, wf[1]["total"])
-            rows.append([part, kind, len(mine), "median"] + [med[s] for s in stages] +
-                        [med["total"], ""])
-            rows.append([part, kind, len(mine), "worst"] + [worst[s] for s in stages] +
-                        [worst["total"], "%d (%s)" % (wf[1]["total"], wf[0])])
+    for part, kind, mine in chain_cases(args.chain, "budget"):
+        stages, med, worst, wf = summary(mine)
+        worst_all = max(worst_all, wf[1]["total"])
+        rows.append([part, kind, len(mine), "median"] + [med[s] for s in stages] +
+                    [med["total"], ""])
+        rows.append([part, kind, len(mine), "worst"] + [worst[s] for s in stages] +
+                    [worst["total"], "%d (%s)" % (wf[1]["total"], wf[0])])
     table(["part", "kind of frame", "frames", "statistic"] + stages + ["total", "worst frame"],
           rows)
     verdict = "met" if worst_all <= 2400000 else "NOT met"
@@ -130,20 +136,15 @@ def main():
           "frames: <= 800 000):")
     print()
     rows, board_rest = [], {}
-    for part, path in parts(args.chain):
-        frames = frames_of(path, "fpga")
-        for case, kind in KINDS:
-            mine = [f for f in frames if f[0].startswith(case + "_")]
-            if not mine:
-                sys.exit("budget_table: no fpga frame of %s in %s" % (case, path))
-            stages, med, worst, wf = summary(mine)
-            rest = [f[1]["total"] - f[1]["beats"] for f in mine]
-            rows.append([part, kind, len(mine), "median"] + [med[s] for s in stages] +
-                        [med["total"], sorted(rest)[len(rest) // 2]])
-            rows.append([part, kind, len(mine), "worst"] + [worst[s] for s in stages] +
-                        [worst["total"], max(rest)])
-            if kind == "board":
-                board_rest[part] = (sorted(rest)[len(rest) // 2], max(rest))
+    for part, kind, mine in chain_cases(args.chain, "fpga"):
+        stages, med, worst, wf = summary(mine)
+        rest = [f[1]["total"] - f[1]["beats"] for f in mine]
+        rows.append([part, kind, len(mine), "median"] + [med[s] for s in stages] +
+                    [med["total"], sorted(rest)[len(rest) // 2]])
+        rows.append([part, kind, len(mine), "worst"] + [worst[s] for s in stages] +
+                    [worst["total"], max(rest)])
+        if kind == "board":
+            board_rest[part] = (sorted(rest)[len(rest) // 2], max(rest))
     table(["part", "kind of frame", "frames", "statistic"] + stages + ["total", "after the edges"],
           rows)
     for part, (med, worst) in board_rest.items():

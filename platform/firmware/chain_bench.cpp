@@ -252,6 +252,27 @@ const char* run_frame(const ChainFrame& frame, Input input, bool& frame_open, In
     return nullptr;
 }
 
+// worst: stage by stage, the larger of itself and n (the stages' worst frames may differ).
+void keep_worst(Instructions& worst, const Instructions& n) {
+    for (unsigned s = 0; s < kStages; ++s)
+        if (n.stage[s] > worst.stage[s]) worst.stage[s] = n.stage[s];
+}
+
+// "FAIL <prefix><frame>: <why>"
+void print_failure(const char* prefix, const char* frame, const char* why) {
+    sh_write("FAIL ");
+    sh_write(prefix);
+    sh_write(frame);
+    sh_write(": ");
+    sh_write(why);
+    sh_write("\n");
+}
+
+// A new tracker: track ids start again from 1 (reset() keeps them running on).
+void start_tracker() {
+    new (&g_tracker) qt::QuadTracker(qt::default_quad_tracker_params(kWidth, kHeight));
+}
+
 // The median frame of each stage (the upper one of an even count; the stages' medians may come
 // from different frames, and their total is their sum, like the worst line's).
 Instructions median_of(const Instructions* frames, unsigned count) {
@@ -285,7 +306,7 @@ int main() {
     sh_dec(kChecks);
     sh_write(" header checks as expected\n");
 
-    g_tracker.set_params(qt::default_quad_tracker_params(kWidth, kHeight));
+    start_tracker();
     unsigned failures = 0;
     bool frame_open = false;
     constexpr unsigned kCases = sizeof kChainCases / sizeof kChainCases[0];
@@ -304,11 +325,7 @@ int main() {
                                           per_frame[f], text_hash[c][f]);
             if (error != nullptr) {
                 ++failures;
-                sh_write("FAIL ");
-                sh_write(chain.frames[f].name);
-                sh_write(": ");
-                sh_write(error);
-                sh_write("\n");
+                print_failure("", chain.frames[f].name, error);
             }
         }
         sh_write("=== end ");
@@ -320,9 +337,7 @@ int main() {
             sh_write(chain.frames[f].name);
             for (unsigned w = 0; w < kWorks; ++w) print_field(kWorkNames[w], per_frame[f].work[w]);
             sh_write("\n");
-            for (unsigned s = 0; s < kStages; ++s)
-                if (per_frame[f].stage[s] > worst[c].stage[s])
-                    worst[c].stage[s] = per_frame[f].stage[s];
+            keep_worst(worst[c], per_frame[f]);
         }
         if (chain.count > 1)
             print_instructions("median ", chain.name, median_of(per_frame, chain.count));
@@ -338,7 +353,7 @@ int main() {
     // The same frames with edges from the FPGA: the same texts, and what the rest costs. A new
     // tracker, as the first pass had: track ids run on from case to case.
     unsigned fpga_frames = 0, fpga_equal = 0;
-    new (&g_tracker) qt::QuadTracker(qt::default_quad_tracker_params(kWidth, kHeight));
+    start_tracker();
     for (unsigned c = 0; c < kCases; ++c) {
         const ChainCase& chain = kChainCases[c];
         g_tracker.reset();
@@ -353,16 +368,12 @@ int main() {
                 ++fpga_equal;
             } else {
                 ++failures;
-                sh_write("FAIL fpga ");
-                sh_write(chain.frames[f].name);
-                sh_write(": ");
-                sh_write(error != nullptr ? error : "result text differs from the camera rows'");
-                sh_write("\n");
+                print_failure(
+                    "fpga ", chain.frames[f].name,
+                    error != nullptr ? error : "result text differs from the camera rows'");
             }
             print_instructions("", chain.frames[f].name, per_frame[f], Input::fpga_beats);
-            for (unsigned s = 0; s < kStages; ++s)
-                if (per_frame[f].stage[s] > fpga_worst.stage[s])
-                    fpga_worst.stage[s] = per_frame[f].stage[s];
+            keep_worst(fpga_worst, per_frame[f]);
         }
         if (chain.count > 1)
             print_instructions("median ", chain.name, median_of(per_frame, chain.count),
