@@ -103,6 +103,10 @@ public:
 
     // Index of the point at (x, y), or -1 when there is none (or y is outside the frame).
     int32_t find(int32_t x, int32_t y) const;
+    // The same answer, searched from *hint when *hint lies within row y's indices (a walk along
+    // a row asks for x, x ± 1, ...: a step or two from the last answer instead of a binary
+    // search); then *hint is left at row y's first point with x' >= x, for the next call.
+    int32_t find_near(int32_t x, int32_t y, uint32_t* hint) const;
     // Row y's points with x_lo <= x <= x_hi: indices [*first, *end), empty when y is outside
     // the frame. One search for the span instead of one per pixel.
     void span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const;

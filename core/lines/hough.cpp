@@ -13,6 +13,55 @@ int rho_shift_of(uint16_t rho_step) {
     return rho_step == 1 ? 0 : rho_step == 2 ? 1 : rho_step == 4 ? 2 : -1;
 }
 
+// One run of consecutive θ indices [t_first, t_last] of a point's votes. Kept out of line, with
+// everything in arguments: inside the large PPHT loop the compiler keeps its values on the
+// stack, and a store through the uint8_t bins may alias any of them (reloaded every vote).
+struct VoteRun {
+    uint8_t* bins;
+    const int16_t* cos_q14;
+    const int16_t* sin_q14;
+    uint32_t n_rho;
+    int32_t x, y;   // the point, pixels from the frame centre
+    int32_t bias;   // rounding plus the rho offset, in rho units << shift
+    int32_t shift;  // 14 + log2(rho_step): rho = (x·cos + y·sin + bias) >> shift
+};
+
+uint32_t rho_index(const VoteRun& r, int32_t t) {
+    const int32_t v = r.x * r.cos_q14[t] + r.y * r.sin_q14[t];  // rho, 1.0 = 2^14
+    return static_cast<uint32_t>(t) * r.n_rho + static_cast<uint32_t>((v + r.bias) >> r.shift);
+}
+
+// +1 on each bin (saturating at 255, counted in *saturated); returns the highest count, from
+// `best` up, with its bin in *best_index.
+__attribute__((noinline)) uint32_t cast_run(const VoteRun r, int32_t t_first, int32_t t_last,
+                                            uint32_t best, uint32_t* best_index,
+                                            uint32_t* saturated) {
+    uint32_t lost = 0, index_of_best = *best_index;
+    for (int32_t t = t_first; t <= t_last; ++t) {
+        const uint32_t index = rho_index(r, t);
+        const uint32_t bin = r.bins[index];
+        lost += bin == 255;
+        const uint32_t raised = bin + (bin < 255);
+        r.bins[index] = static_cast<uint8_t>(raised);
+        if (raised > best) {
+            best = raised;
+            index_of_best = index;
+        }
+    }
+    *best_index = index_of_best;
+    *saturated += lost;
+    return best;
+}
+
+// −1 on each bin (not below 0).
+__attribute__((noinline)) void withdraw_run(const VoteRun r, int32_t t_first, int32_t t_last) {
+    for (int32_t t = t_first; t <= t_last; ++t) {
+        const uint32_t index = rho_index(r, t);
+        const uint32_t bin = r.bins[index];
+        r.bins[index] = static_cast<uint8_t>(bin - (bin > 0));
+    }
+}
+
 class Ppht {
 public:
     Ppht(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& p,
@@ -33,11 +82,15 @@ public:
                       ? -1
                       : static_cast<int32_t>((p.vote_window_deg * n + 179u) / 180u);
         if (2 * window_ + 1 >= static_cast<int32_t>(n)) window_ = -1;  // the window covers all θ
-        for (uint32_t t = 0; t < n; ++t) {
-            // θ_t = t·180°/n as a binary angle: t·2^31/n.
-            const SinCos sc = sin_cos(static_cast<angle_t>((static_cast<uint64_t>(t) << 31) / n));
-            ws.cos_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.cos.raw, 16));
-            ws.sin_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.sin.raw, 16));
+        if (*ws.table_bins != n) {
+            for (uint32_t t = 0; t < n; ++t) {
+                // θ_t = t·180°/n as a binary angle: t·2^31/n.
+                const SinCos sc =
+                    sin_cos(static_cast<angle_t>((static_cast<uint64_t>(t) << 31) / n));
+                ws.cos_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.cos.raw, 16));
+                ws.sin_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.sin.raw, 16));
+            }
+            *ws.table_bins = static_cast<uint16_t>(n);
         }
         memset(ws.bins, 0, n * n_rho_);
     }
@@ -115,25 +168,18 @@ private:
             runs[1][0] = 0;
             runs[1][1] = last - n;
         }
-        const int32_t round = 1 << (13 + rho_shift_), shift = 14 + rho_shift_;
+        const int32_t shift = 14 + rho_shift_;
+        const int32_t bias = (1 << (13 + rho_shift_)) + (rho_half_ << shift);  // rounding, offset
+        const VoteRun run{ws_.bins, ws_.cos_q14, ws_.sin_q14, n_rho_, x, y, bias, shift};
+        uint32_t best_index = 0;
         for (int32_t k = 0; k < 2; ++k) {
-            for (int32_t t = runs[k][0]; t <= runs[k][1]; ++t) {
-                const int32_t v = x * ws_.cos_q14[t] + y * ws_.sin_q14[t];  // rho, 1.0 = 2^14
-                const uint32_t index = static_cast<uint32_t>(t) * n_rho_ +
-                                       static_cast<uint32_t>(((v + round) >> shift) + rho_half_);
-                uint8_t& bin = ws_.bins[index];
-                if (delta < 0) {
-                    bin = static_cast<uint8_t>(bin - (bin > 0));
-                    continue;
-                }
-                if (bin == 255) ++stats_.saturated_votes;
-                bin = static_cast<uint8_t>(bin + (bin < 255));
-                if (bin > best) {
-                    best = bin;
-                    *best_bin = index;
-                }
-            }
+            if (delta < 0)
+                withdraw_run(run, runs[k][0], runs[k][1]);
+            else
+                best = cast_run(run, runs[k][0], runs[k][1], best, &best_index,
+                                &stats_.saturated_votes);
         }
+        if (best > 0) *best_bin = best_index;
         if (delta > 0) stats_.votes += static_cast<uint32_t>(last - first + 1);
         return best;
     }
@@ -196,7 +242,8 @@ private:
             return;
         }
         for (int32_t off = -corridor; off <= corridor; ++off) {
-            const int32_t i = edges_.find(major, minor + off);
+            const int32_t y = minor + off;
+            const int32_t i = edges_.find_near(major, y, &row_hint_[static_cast<uint32_t>(y) & 7u]);
             if (i >= 0 && across(tr, edges_[static_cast<uint16_t>(i)]))
                 visit(static_cast<uint16_t>(i), off);
         }
@@ -387,6 +434,9 @@ private:
     int32_t rho_half_;
     uint32_t n_rho_;
     int32_t window_ = -1;  // θ bins either side of the gradient's; -1 = vote every θ
+    // Where the last search in row y (keyed y mod 8) ended: a walk along x asks the same few
+    // rows for consecutive columns (see EdgeList::find_near). Any value is safe.
+    mutable uint32_t row_hint_[8] = {};
 };
 
 }  // namespace

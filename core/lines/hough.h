@@ -51,6 +51,8 @@ struct HoughWorkspace {
     int16_t* cos_q14;  // per θ bin, 1.0 = 2^14
     int16_t* sin_q14;
     uint16_t theta_capacity;
+    uint16_t* table_bins;  // theta_bins the tables hold (0: not filled): a frame with the same
+                           // theta_bins as the last one reuses them (90 CORDIC runs saved)
 };
 
 // Rho bins on each side of the frame centre: ceil(R / rho_step), R = floor(distance from the
@@ -75,14 +77,15 @@ Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const Ho
                       const HoughWorkspace& ws, Segment* out, uint16_t out_capacity,
                       uint16_t* count, HoughStats* stats);
 
-// Owning storage: BinCapacity bytes of counters + 4·MaxThetaBins bytes of tables.
+// Owning storage: BinCapacity bytes of counters + 4·MaxThetaBins + 2 bytes of tables.
 template <uint32_t BinCapacity, uint16_t MaxThetaBins>
 struct HoughStorage {
     uint8_t bins[BinCapacity] = {};
     int16_t cos_q14[MaxThetaBins] = {};
     int16_t sin_q14[MaxThetaBins] = {};
+    uint16_t table_bins = 0;
     HoughWorkspace view() {
-        return HoughWorkspace{bins, BinCapacity, cos_q14, sin_q14, MaxThetaBins};
+        return HoughWorkspace{bins, BinCapacity, cos_q14, sin_q14, MaxThetaBins, &table_bins};
     }
 };
 

@@ -121,6 +121,18 @@ TEST_CASE("edge list lookups agree with a brute-force search, and capacity overf
                 REQUIRE(ep::y(list[static_cast<uint16_t>(i)]) == static_cast<uint32_t>(y));
             }
         }
+    // find_near gives find's answer from any hint: walks either way along a row (the hint
+    // carried from call to call, as PPHT does), and hints anywhere in the list or past it.
+    for (int y = -1; y <= 40; ++y) {
+        uint32_t hint = 0;
+        for (int x = -1; x <= 50; ++x) REQUIRE(list.find_near(x, y, &hint) == list.find(x, y));
+        for (int x = 50; x >= -1; --x) REQUIRE(list.find_near(x, y, &hint) == list.find(x, y));
+        for (int k = 0; k < 200; ++k) {
+            const int x = static_cast<int>(rng.below(52)) - 1;
+            uint32_t any = rng.below(list.size() + 10u);
+            REQUIRE(list.find_near(x, y, &any) == list.find(x, y));
+        }
+    }
     // Fill past the capacity.
     REQUIRE(list.begin_frame(2) == Status::ok);
     list.begin_row(0);

@@ -82,6 +82,13 @@ TEST_CASE("PPHT accumulator equals a double-precision Hough of the same votes wi
     Segment out[4];
     uint16_t count = 0;
     HoughStats stats;
+    // A frame with other θ bins first: the sin/cos tables the storage keeps between frames must
+    // be made again for this one.
+    HoughParams other = p.hough;
+    other.theta_bins = 60;
+    REQUIRE(hough_segments(copy, 320, 240, other, storage.view(), out, 4, &count, &stats) ==
+            Status::ok);
+    for (uint16_t i = 0; i < copy.size(); ++i) copy[i] = ep::with_state(copy[i], ep::kFresh);
     REQUIRE(hough_segments(copy, 320, 240, p.hough, storage.view(), out, 4, &count, &stats) ==
             Status::ok);
     REQUIRE(count == 0);
