@@ -24,14 +24,20 @@ constexpr U isqrt_bits(U n, U bit) {
 }
 }  // namespace detail
 
-// floor(sqrt(n)) for every 32-bit n: the result r satisfies r*r <= n < (r+1)*(r+1).
+// floor(sqrt(n)) for every 32-bit n: the result r satisfies r*r <= n < (r+1)*(r+1). The first
+// digit is the highest even power of two <= n, found with a count of leading zeros (one CLZ on
+// a Cortex-M3/M4).
 constexpr uint16_t isqrt32(uint32_t n) {
-    return static_cast<uint16_t>(detail::isqrt_bits<uint32_t>(n, uint32_t{1} << 30));
+    return n == 0 ? uint16_t{0}
+                  : static_cast<uint16_t>(detail::isqrt_bits<uint32_t>(
+                        n, uint32_t{1} << ((31 - __builtin_clz(n)) & ~1)));
 }
 
-// floor(sqrt(n)) for every 64-bit n.
+// floor(sqrt(n)) for every 64-bit n; below 2^32 in 32-bit arithmetic (the same digits).
 constexpr uint32_t isqrt64(uint64_t n) {
-    return static_cast<uint32_t>(detail::isqrt_bits<uint64_t>(n, uint64_t{1} << 62));
+    return (n >> 32) == 0 ? isqrt32(static_cast<uint32_t>(n))
+                          : static_cast<uint32_t>(detail::isqrt_bits<uint64_t>(
+                                n, uint64_t{1} << ((63 - __builtin_clzll(n)) & ~1)));
 }
 
 // sqrt(n) rounded to nearest: floor(sqrt(n)) + 1 when n > r*r + r (the midpoint

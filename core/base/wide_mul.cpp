@@ -48,12 +48,7 @@ int64_t mul_shr_round(int64_t a, int64_t b, int n) {
 namespace {
 
 int bit_length(int64_t v) {  // v > 0: the n with 2^(n-1) <= v < 2^n
-    int n = 0;
-    while (v != 0) {
-        v >>= 1;
-        ++n;
-    }
-    return n;
+    return 64 - __builtin_clzll(static_cast<uint64_t>(v));
 }
 
 }  // namespace

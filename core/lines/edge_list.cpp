@@ -139,28 +139,6 @@ int32_t EdgeList::find(int32_t x, int32_t y) const {
                : -1;
 }
 
-int32_t EdgeList::find_near(int32_t x, int32_t y, uint32_t* hint) const {
-    if (y < 0 || y >= static_cast<int32_t>(height_) || x < 0) return -1;
-    const uint32_t key = static_cast<uint32_t>(x);
-    const uint32_t row_begin = row_start_[y], row_end = row_start_[y + 1];
-    uint32_t i = *hint;
-    if (i >= row_begin && i <= row_end) {
-        // At most kSteps moves either way, then the binary search: a hint far off costs no more
-        // than a few compares on top of find().
-        constexpr uint32_t kSteps = 4;
-        uint32_t steps = 0;
-        while (i < row_end && ep::x(points_[i]) < key && steps < kSteps) ++i, ++steps;
-        while (i > row_begin && ep::x(points_[i - 1]) >= key && steps < kSteps) --i, ++steps;
-        const bool settled = (i == row_end || ep::x(points_[i]) >= key) &&
-                             (i == row_begin || ep::x(points_[i - 1]) < key);
-        if (!settled) i = lower_bound(key, static_cast<uint32_t>(y));
-    } else {
-        i = lower_bound(key, static_cast<uint32_t>(y));
-    }
-    *hint = i;
-    return i < row_end && ep::x(points_[i]) == key ? static_cast<int32_t>(i) : -1;
-}
-
 void EdgeList::span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const {
     *first = *end = 0;
     if (y < 0 || y >= static_cast<int32_t>(height_) || x_hi < 0 || x_hi < x_lo) return;

@@ -106,12 +106,37 @@ public:
     // The same answer, searched from *hint when *hint lies within row y's indices (a walk along
     // a row asks for x, x ± 1, ...: a step or two from the last answer instead of a binary
     // search); then *hint is left at row y's first point with x' >= x, for the next call.
-    int32_t find_near(int32_t x, int32_t y, uint32_t* hint) const;
+    // Inline: PPHT calls it three times per step of a walk along x.
+    int32_t find_near(int32_t x, int32_t y, uint32_t* hint) const {
+        if (static_cast<uint32_t>(y) >= height_ || x < 0) return -1;
+        const uint32_t key = static_cast<uint32_t>(x);
+        const uint32_t row_begin = row_start_[y], row_end = row_start_[y + 1];
+        uint32_t i = *hint;
+        bool settled = false;
+        if (i >= row_begin && i <= row_end) {
+            // At most kSteps moves, forward or back, then the binary search: a hint far off
+            // costs no more than a few compares on top of find().
+            constexpr uint32_t kSteps = 4;
+            uint32_t steps = 0;
+            if (i < row_end && x_at(i) < key) {
+                do ++i;
+                while (i < row_end && x_at(i) < key && ++steps < kSteps);
+                settled = i == row_end || x_at(i) >= key;
+            } else {
+                while (i > row_begin && x_at(i - 1) >= key && steps < kSteps) --i, ++steps;
+                settled = i == row_begin || x_at(i - 1) < key;
+            }
+        }
+        if (!settled) i = lower_bound(key, static_cast<uint32_t>(y));
+        *hint = i;
+        return i < row_end && x_at(i) == key ? static_cast<int32_t>(i) : -1;
+    }
     // Row y's points with x_lo <= x <= x_hi: indices [*first, *end), empty when y is outside
     // the frame. One search for the span instead of one per pixel.
     void span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const;
 
 private:
+    uint32_t x_at(uint32_t i) const { return ep::x(points_[i]); }
     // Index of row y's first point with x >= key (row_start_[y + 1] when none); y in frame.
     uint32_t lower_bound(uint32_t key, uint32_t y) const;
     // Raises floor_ until at most 3/4 of the capacity is left and removes the points below it.

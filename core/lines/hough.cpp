@@ -221,8 +221,11 @@ private:
 
     // Predicted minor coordinate (whole pixels) at whole-pixel major coordinate `major`.
     static int32_t predict(const Track& tr, int32_t major) {
-        const int64_t d = static_cast<int64_t>(major) * 32 - tr.anchor_major32;
-        const int64_t minor32 = tr.anchor_minor32 + ((d * tr.slope_q16) >> 16);
+        // |d| < 2^17 (both terms are 1/32 px within a 2048 px frame) and |slope| <= 2^17: a
+        // 32 x 32 -> 64-bit product (one SMULL on a Cortex-M).
+        const int32_t d = major * 32 - tr.anchor_major32;
+        const int64_t minor32 =
+            tr.anchor_minor32 + ((static_cast<int64_t>(d) * tr.slope_q16) >> 16);
         return static_cast<int32_t>((minor32 + 16) >> 5);
     }
 

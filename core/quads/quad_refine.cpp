@@ -48,6 +48,25 @@ bool along_side(uint32_t dir, Polarity p) {
     return d <= 2u || d >= 6u;
 }
 
+uint32_t popcount32(uint32_t v) {  // bits set, SWAR (no population count instruction on M3/M4)
+    v = v - ((v >> 1) & 0x55555555u);
+    v = (v & 0x33333333u) + ((v >> 2) & 0x33333333u);
+    v = (v + (v >> 4)) & 0x0F0F0F0Fu;
+    return (v * 0x01010101u) >> 24;
+}
+
+// Whether any of bits [lo, hi) of the bit set `marks` is set.
+bool marks_in(const uint32_t* marks, uint32_t lo, uint32_t hi) {
+    while (lo < hi) {
+        const uint32_t word = lo >> 5, bit = lo & 31u;
+        const uint32_t span = hi - lo < 32u - bit ? hi - lo : 32u - bit;  // bits in this word
+        const uint32_t mask = (span == 32u ? ~0u : ((1u << span) - 1u)) << bit;
+        if (marks[word] & mask) return true;
+        lo += span;
+    }
+    return false;
+}
+
 // Adds to m (coordinates relative to the walk's origin) every edge point within band32 of the
 // walk's line between t0 and t1 whose gradient runs across the line with the side's polarity;
 // returns the major-axis steps (pixel columns of a side nearer horizontal, rows otherwise)
@@ -92,10 +111,15 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
     auto consider = [&](uint32_t i, int32_t major) {
         const edge_point p = edges[static_cast<uint16_t>(i)];
         if (major < first || major > last || !along_side(ep::dir(p), pol)) return;
-        const int64_t dx = ep::x32(p) - w.ox32, dy = ep::y32(p) - w.oy32;
-        const int64_t d = (dx * -static_cast<int64_t>(w.uy) + dy * w.ux) >> 30;  // across, 1/32 px
+        // |dx|, |dy| < 2^21 (1/32 px; the origin is a corner near the frame), so the distance
+        // across, < 2^22 after the shift, is formed from two 32 x 32 -> 64-bit products.
+        const int32_t dx = ep::x32(p) - w.ox32, dy = ep::y32(p) - w.oy32;
+        const int32_t d =
+            static_cast<int32_t>((static_cast<int64_t>(dx) * -static_cast<int64_t>(w.uy) +
+                                  static_cast<int64_t>(dy) * w.ux) >>
+                                 30);  // across, 1/32 px
         if (d > band32 || d < -band32) return;
-        m.add(static_cast<int32_t>(dx), static_cast<int32_t>(dy));
+        m.add(dx, dy);
         const uint32_t k = static_cast<uint32_t>(major - first);
         marks[k >> 5] |= 1u << (k & 31u);
     };
@@ -128,14 +152,13 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
                 consider(i, static_cast<int32_t>(ep::x(edges[static_cast<uint16_t>(i)])));
         }
     }
+    // Steps holding a point, and whether any lies in the first or the last quarter of them
+    // (a word of marks at a time; no mark lies at or beyond *steps).
     uint32_t held = 0;
     const uint32_t quarter = *steps / 4;
-    for (uint32_t k = 0; k < *steps; ++k) {
-        if (((marks[k >> 5] >> (k & 31u)) & 1u) == 0) continue;
-        ++held;
-        if (k < quarter) *ends |= 1u;
-        if (*steps - 1 - k < quarter) *ends |= 2u;
-    }
+    for (uint32_t j = 0; j < (*steps + 31u) / 32u; ++j) held += popcount32(marks[j]);
+    if (marks_in(marks, 0, quarter)) *ends |= 1u;
+    if (marks_in(marks, *steps - quarter, *steps)) *ends |= 2u;
     // The walk may run either way along the side: bit 0 is the end at the walk's origin.
     if ((major_is_y ? w.uy : w.ux) < 0)
         *ends = static_cast<uint8_t>(((*ends & 1u) << 1) | (*ends >> 1));
