@@ -324,7 +324,6 @@ module edge_stage #(
     // final (of its frame), broken (the frame's, on its final pixel).
     reg       e3_slot, e3_cand, e3_last, e3_final, e3_broken, e3_swap;
     reg [9:0] e3_sp, e3_sq, e3_mm;
-    reg [8:0] e3_m;
     reg [3:0] e3_d;
 
     always @(posedge aclk) begin
@@ -341,7 +340,6 @@ module edge_stage #(
             e3_sp   <= sp;
             e3_sq   <= sq;
             e3_mm   <= odd ? {m_c, 1'b0} : {1'b0, m_c};      // 2m for odd bins
-            e3_m    <= m_c;
             e3_d    <= m_d;
         end
     end
@@ -382,7 +380,7 @@ module edge_stage #(
             e4_neg  <= e3_swap ? (~d_qp[10] & (d_qp != 11'd0)) : (~d_pq[10] & (d_pq != 11'd0));
             e4_n    <= d_pq[10] ? d_qp[9:0] : d_pq[9:0];
             e4_den  <= den;
-            e4_m    <= e3_m;
+            e4_m    <= e3_d[0] ? e3_mm[9:1] : e3_mm[8:0];    // m, from m' (no copy of m)
             e4_d    <= e3_d;
         end
     end
@@ -456,6 +454,9 @@ module edge_stage #(
     wire [13:0] u1 = {1'b0, e6_r} - {3'b000, e6_den};
     wire [1:0]  lo_digit = ~u3[13] ? 2'd3 : ~u2[13] ? 2'd2 : ~u1[13] ? 2'd1 : 2'd0;
     wire [3:0]  q6 = {e6_hi, lo_digit};
+    // 0 - q6, written bit by bit: gates, where the subtraction would be a carry chain behind the
+    // compares' (timing).
+    wire [3:0]  q6_neg = {q6[3] ^ (|q6[2:0]), q6[2] ^ (|q6[1:0]), q6[1] ^ q6[0], q6[0]};
 
     reg        e7_slot, e7_edge, e7_last, e7_final, e7_broken;
     reg [3:0]  e7_delta;
@@ -472,7 +473,7 @@ module edge_stage #(
     always @(posedge aclk) begin
         if (adv) begin
             {e7_edge, e7_last, e7_final, e7_broken} <= {e6_edge, e6_last, e6_final, e6_broken};
-            e7_delta <= e6_neg ? (4'd0 - q6) : (q6[3] ? 4'd7 : q6);
+            e7_delta <= e6_neg ? q6_neg : (q6[3] ? 4'd7 : q6);
             e7_m     <= e6_m;
             e7_d     <= e6_d;
         end

@@ -21,8 +21,8 @@
 //       next clock with C as its own right neighbour; the column at x = 0 that may enter in
 //       that clock emits nothing, so input and output keep one beat per clock.
 //   S2  gx, gy; magnitude fold (gradient_dir_fold). A fill column becomes a fill word here.
-//   S3  lo, hi, 3*hi; the first sector compare and 19*hi (gradient_dir_s51), lo + hi.
-//   S3b the second compare and the direction bin (gradient_dir_bin).
+//   S3  lo, hi; 3*hi, then 51*hi and 19*hi (gradient_dir_s51), lo + hi.
+//   S3b the two sector compares and the direction bin (gradient_dir_bin).
 //   S4  output word, into the register slice.
 // Latency without stalls: a pixel's word leaves W + 7 clocks after the pixel was accepted
 // (one row plus one pixel for its right and lower neighbours, five stages, the slice).
@@ -400,10 +400,8 @@ module gradient #(
 
     wire [7:0] f_lo, f_hi;
     wire       f_swap;
-    wire [9:0] f_hi3;
 
-    gradient_dir_fold u_fold (.gx(s2_gx), .gy(s2_gy), .lo(f_lo), .hi(f_hi), .swap(f_swap),
-                              .hi3(f_hi3));
+    gradient_dir_fold u_fold (.gx(s2_gx), .gy(s2_gy), .lo(f_lo), .hi(f_hi), .swap(f_swap));
 
     // ------------------------------------------------------------------------------------
     // S3: lo, hi
@@ -411,7 +409,6 @@ module gradient #(
     reg       s3_valid, s3_tuser, s3_tlast, s3_eof, s3_fill, s3_swap;
     reg [8:0] s3_gx, s3_gy;
     reg [7:0] s3_lo, s3_hi;
-    reg [9:0] s3_hi3;
 
     always @(posedge aclk) begin
         if (rst) begin
@@ -427,19 +424,19 @@ module gradient #(
             s3_lo    <= f_lo;
             s3_hi    <= f_hi;
             s3_swap  <= f_swap;
-            s3_hi3   <= f_hi3;
         end
     end
 
-    wire        d_le51;
+    wire [5:0]  d_m51h;
     wire [12:0] d_m19;
 
-    gradient_dir_s51 u_s51 (.lo(s3_lo), .hi(s3_hi), .hi3(s3_hi3), .le51(d_le51), .m19(d_m19));
+    gradient_dir_s51 u_s51 (.hi(s3_hi), .m51h(d_m51h), .m19(d_m19));
 
     // ------------------------------------------------------------------------------------
-    // S3b: 51*hi compared, 19*hi; magnitude lo + hi
+    // S3b: 51*hi (its upper bits) and 19*hi; magnitude lo + hi
     // ------------------------------------------------------------------------------------
-    reg        s3b_valid, s3b_tuser, s3b_tlast, s3b_eof, s3b_fill, s3b_swap, s3b_le51;
+    reg        s3b_valid, s3b_tuser, s3b_tlast, s3b_eof, s3b_fill, s3b_swap;
+    reg [5:0]  s3b_m51h;
     reg [8:0]  s3b_gx, s3b_gy, s3b_mag;
     reg [7:0]  s3b_lo;
     reg [12:0] s3b_m19;
@@ -454,7 +451,7 @@ module gradient #(
             s3b_eof   <= s3_eof;
             s3b_fill  <= s3_fill;
             s3b_swap  <= s3_swap;
-            s3b_le51  <= d_le51;
+            s3b_m51h  <= d_m51h;
             s3b_gx    <= s3_gx;
             s3b_gy    <= s3_gy;
             s3b_mag   <= {1'b0, s3_lo} + {1'b0, s3_hi};    // |gx| + |gy|
@@ -465,7 +462,7 @@ module gradient #(
 
     wire [3:0] dir;
 
-    gradient_dir_bin u_bin (.lo(s3b_lo), .m19(s3b_m19), .le51(s3b_le51), .swap(s3b_swap),
+    gradient_dir_bin u_bin (.lo(s3b_lo), .m19(s3b_m19), .m51h(s3b_m51h), .swap(s3b_swap),
                             .negx(s3b_gx[8]), .negy(s3b_gy[8]), .dir(dir));
 
     reg [31:0] word;
