@@ -45,7 +45,8 @@
 
 module gradient #(
     parameter MAX_WIDTH  = 640,                // pixels per row, upper bound of the learnt width
-    parameter PIXEL_BITS = 8                   // grey level bits; the word's fields need 8
+    parameter PIXEL_BITS = 8,                  // grey level bits; the word's fields need 8
+    parameter MAX_ROWS   = 65535               // a cfg_height above it is refused like 0
 ) (
     input  wire                  aclk,
     input  wire                  aresetn,      // synchronous, active low
@@ -87,10 +88,14 @@ module gradient #(
         if (PIXEL_BITS != 8) begin : g_check_pixel
             gradient_PIXEL_BITS_must_be_8 u_bad_pixel_bits ();
         end
+        if (MAX_ROWS < 1 || MAX_ROWS > 65535) begin : g_check_rows
+            gradient_MAX_ROWS_must_be_1_to_65535 u_bad_max_rows ();
+        end
     endgenerate
 
     localparam XW = (MAX_WIDTH < 2) ? 1 : clog2(MAX_WIDTH);   // column index bits
     localparam [XW-1:0] MAXM2 = (MAX_WIDTH < 2) ? 0 : MAX_WIDTH - 2;
+    localparam RW = clog2(MAX_ROWS + 1);                      // row counter bits
 
     wire rst = ~aresetn;
 
@@ -108,7 +113,7 @@ module gradient #(
     reg          w_one;       // W == 1
     reg          x_last;      // x == W - 1 (rows >= 1)
     reg          x_max;       // x == MAX_WIDTH - 1
-    reg [15:0]   rows;        // rows of the frame not yet completed, including the current one
+    reg [RW-1:0] rows;        // rows of the frame not yet completed, including the current one
     reg          rows_one;    // rows == 1
 
     reg          tail;        // the tail runs: a column a clock (flush or fill)
@@ -143,9 +148,11 @@ module gradient #(
     // ahead, so that none is in the path from s_axis_tready to the state.
     wire          sof      = s_axis_tuser;
     wire          xb_zero  = sof | x_zero;
-    wire [15:0]   rows_b   = sof ? cfg_height : rows;
-    wire [15:0]   rows_n   = rows_b - {15'd0, s_axis_tlast};
-    wire          h_zero   = (cfg_height == 16'd0);
+    // A height above MAX_ROWS is refused like 0; a frame is started only with a height it
+    // accepts, so the row counter needs RW bits.
+    wire [RW-1:0] rows_b   = sof ? cfg_height[RW-1:0] : rows;
+    wire [RW-1:0] rows_n   = rows_b - {{(RW-1){1'b0}}, s_axis_tlast};
+    wire          h_zero   = (cfg_height == 16'd0) || (cfg_height > MAX_ROWS);
     wire          last_row = sof ? (cfg_height == 16'd1) : rows_one;
     wire          at_wm1   = x_last;
     wire          at_max   = sof ? (MAX_WIDTH == 1) : x_max;
@@ -221,7 +228,7 @@ module gradient #(
                 x_max    <= s_axis_tlast ? (MAX_WIDTH == 1) :
                             (sof ? (MAX_WIDTH == 2) : (MAX_WIDTH >= 2 && x == MAXM2));
                 rows     <= rows_n;
-                rows_one <= (rows_n == 16'd1);
+                rows_one <= (rows_n == {{(RW-1){1'b0}}, 1'b1});
                 learn  <= in_row0 & ~s_axis_tlast;
                 active <= ~(s_axis_tlast & last_row);
                 if (start)
