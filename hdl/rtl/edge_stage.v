@@ -105,20 +105,34 @@ module edge_stage #(
     reg [8:0]    thr;         // the frame's threshold
     reg          tail, pending, t_zero, t_broken;
     reg [XW-1:0] t, t_wm1;
+    reg          w_one;       // wm1 == 0
+    reg          t_end;       // t == t_wm1 (while the tail runs), kept a step ahead
 
-    wire adv;                 // E1 .. E10 advance (O free and no trailer hold)
+    (* keep *) wire adv;      // E1 .. E10 advance (O free and no trailer hold)
 
     // Also held for a clock when a row of a one-word-wide frame would read column 0 while the
     // word before is written there (wz): the block RAM cannot give the data being written.
     reg  wz;                  // E1 writes column 0 in this clock
     // The tail waits with it (and the input with the tail, which must keep ahead of row 0).
-    wire rd0_wait = wz & ((x_zero & active & ~learn) | (tail & t_zero));
-    assign s_axis_tready = rdy & adv & ~pending & ~(tail & active & ~learn) & ~rd0_wait;
-    wire t_step = tail & adv & ~rd0_wait;               // the tail's column enters E1
+    //   rd0_wait = wz & ((x_zero & active & ~learn) | (tail & t_zero))
+    //   s_axis_tready = rdy & adv & ~pending & ~(tail & active & ~learn) & ~rd0_wait
+    //   t_step = tail & adv & ~rd0_wait
+    // All but adv is a function of flip-flops: kept in two flip-flops made from those
+    // registers' next values (in_go, t_go below), as in gradient.v (timing: adv, with the
+    // output's m_axis_tready in front of it, is then the last gate before the enables).
+    reg  in_go;               // s_axis_tready but for adv
+    reg  t_go;                // tail & ~rd0_wait
+    assign s_axis_tready = adv & in_go;
+    wire t_step = adv & t_go;                           // the tail's column enters E1
 
-    wire       acc   = s_axis_tvalid & s_axis_tready;
     wire       sof   = s_axis_tuser[0];
-    wire       take  = acc & (sof | active);             // a word of a frame
+    // A word of a frame is taken: s_axis_tvalid & s_axis_tready & (sof | active). Kept as two
+    // signals (keep: synthesis would fold them into a deeper tree): the part from flip-flops,
+    // then one gate with adv, the signal with the most logic in front of it.
+    (* keep *) wire w_ok;
+    (* keep *) wire take;
+    assign w_ok = s_axis_tvalid & in_go & (sof | active);
+    assign take = adv & w_ok;
     wire       row0  = sof | learn;
     wire       fill  = s_axis_tdata[`QT_GW_FILL_BIT];
     wire [8:0] b_mag = s_axis_tdata[`QT_GW_MAG_LSB +: 9];
@@ -128,10 +142,15 @@ module edge_stage #(
     wire       b_ok  = (b_mag >= (sof ? cfg_threshold : thr));
     wire       req   = take & s_axis_tuser[1];           // the frame's last word: its tail
     wire       go    = req & ~tail;
-    wire       t_end = (t == t_wm1);
     wire [XW-1:0] col = x & {XW{~sof}};
 
     wire [XW-1:0] rd_addr = tail ? t : x;
+
+    // Next values (without reset) of the registers in_go and t_go are made from.
+    wire active_nx = take ? ~s_axis_tuser[1] : active;
+    wire learn_nx  = take ? (row0 & ~s_axis_tlast) : learn;
+    wire x_zero_nx = take ? s_axis_tlast : x_zero;
+    wire wz_nx     = adv ? (take & (sof | x_zero)) : wz;
 
     always @(posedge aclk) begin
         if (rst) begin
@@ -142,19 +161,27 @@ module edge_stage #(
             x      <= {XW{1'b0}};
             x_zero <= 1'b1;
         end else begin
-            rdy <= 1'b1;
-            if (adv)
-                wz <= take & (sof | x_zero);
+            rdy    <= 1'b1;
+            wz     <= wz_nx;
+            active <= active_nx;
+            learn  <= learn_nx;
+            x_zero <= x_zero_nx;
             if (take) begin
-                active <= ~s_axis_tuser[1];
-                learn  <= row0 & ~s_axis_tlast;
                 broken <= (broken & ~sof) | fill;
                 x      <= s_axis_tlast ? {XW{1'b0}} : col + 1'b1;
-                x_zero <= s_axis_tlast;
-                if (sof)
-                    thr <= cfg_threshold;
-                if (row0 & s_axis_tlast)
-                    wm1 <= col;
+            end
+            // Loaded from the word at the input while it may be taken (w_ok), taken in this
+            // clock or not: a word not taken is offered again (and adv alone has held it, so
+            // w_ok stays), the last load is the one of the clock it is taken, and nothing
+            // reads these registers meanwhile. So adv is not in their enables (timing).
+            // thr: the frame's threshold, read for the frame's other words only.
+            if (w_ok & sof)
+                thr <= cfg_threshold;
+            // W - 1: the column of row 0's last word, from every word of row 0 (read once
+            // row 0 is complete, or while pending, when no word may be taken).
+            if (w_ok & row0) begin
+                wm1   <= col;
+                w_one <= sof | x_zero;
             end
         end
     end
@@ -162,18 +189,53 @@ module edge_stage #(
     // The tail: started by the frame's last word when none runs, else (a one-row frame behind
     // a tail) when that one ends. While no tail runs, its registers follow the values a tail
     // started now would take, so that only `tail` and `pending` hang on the word's acceptance.
+    // pending: a one-row frame behind a tail.
+    wire pending_nx = tail & (req | pending);
+    wire tail_nx    = go | (pending & ~tail) | (tail & ~(t_step & t_end));
+    wire t_zero_nx  = ~tail | (t_zero & ~t_step);
+
     always @(posedge aclk) begin
         if (rst) begin
             tail    <= 1'b0;
             pending <= 1'b0;
         end else begin
-            if (req & tail)
-                pending <= 1'b1;                      // a one-row frame behind a tail
-            else if (~tail)
-                pending <= 1'b0;
-            tail <= go | (pending & ~tail) | (tail & ~(t_step & t_end));
+            pending <= pending_nx;
+            tail    <= tail_nx;
         end
     end
+
+    // in_go and t_go from the next values (see s_axis_tready); rdy's next value is 1.
+    wire rd0_wait_nx = wz_nx & ((x_zero_nx & active_nx & ~learn_nx) | (tail_nx & t_zero_nx));
+
+    always @(posedge aclk) begin
+        if (rst) begin
+            in_go <= 1'b0;
+            t_go  <= 1'b0;
+        end else begin
+            in_go <= ~pending_nx & ~(tail_nx & active_nx & ~learn_nx) & ~rd0_wait_nx;
+            t_go  <= tail_nx & ~rd0_wait_nx;
+        end
+    end
+
+`ifndef SYNTHESIS
+    // in_go, t_go and t_end equal the expressions they stand for (from the first reset on);
+    // the benches stop on a difference.
+    reg  chk_go = 1'b0;
+    wire rd0_wait = wz & ((x_zero & active & ~learn) | (tail & t_zero));
+    wire go_same  = (in_go === (rdy & ~pending & ~(tail & active & ~learn) & ~rd0_wait)) &&
+                    (t_go === (tail & ~rd0_wait)) && (!tail || t_end === (t == t_wm1));
+    always @(posedge aclk) begin
+        if (chk_go && !go_same) begin
+            $display("edge_stage: in_go, t_go or t_end differ from their expressions at %0t",
+                     $time);
+            $fatal(1);
+        end
+        if (rst)
+            chk_go <= 1'b1;
+    end
+`endif
+
+    wire [XW-1:0] t_inc = t + 1'b1;
 
     always @(posedge aclk) begin
         if (~tail) begin
@@ -181,9 +243,11 @@ module edge_stage #(
             t_zero   <= 1'b1;
             t_wm1    <= (pending | ~row0) ? wm1 : col;
             t_broken <= pending ? broken : ((broken & ~sof) | fill);
+            t_end    <= (pending | ~row0) ? w_one : (sof | x_zero);
         end else if (t_step) begin
-            t      <= t + 1'b1;
+            t      <= t_inc;
             t_zero <= 1'b0;
+            t_end  <= (t_inc == t_wm1);
         end
     end
 
@@ -324,7 +388,6 @@ module edge_stage #(
     // final (of its frame), broken (the frame's, on its final pixel).
     reg       e3_slot, e3_cand, e3_last, e3_final, e3_broken, e3_swap;
     reg [9:0] e3_sp, e3_sq, e3_mm;
-    reg [8:0] e3_m;
     reg [3:0] e3_d;
 
     always @(posedge aclk) begin
@@ -341,7 +404,6 @@ module edge_stage #(
             e3_sp   <= sp;
             e3_sq   <= sq;
             e3_mm   <= odd ? {m_c, 1'b0} : {1'b0, m_c};      // 2m for odd bins
-            e3_m    <= m_c;
             e3_d    <= m_d;
         end
     end
@@ -382,7 +444,7 @@ module edge_stage #(
             e4_neg  <= e3_swap ? (~d_qp[10] & (d_qp != 11'd0)) : (~d_pq[10] & (d_pq != 11'd0));
             e4_n    <= d_pq[10] ? d_qp[9:0] : d_pq[9:0];
             e4_den  <= den;
-            e4_m    <= e3_m;
+            e4_m    <= e3_d[0] ? e3_mm[9:1] : e3_mm[8:0];    // m, from m' (no copy of m)
             e4_d    <= e3_d;
         end
     end
@@ -456,6 +518,9 @@ module edge_stage #(
     wire [13:0] u1 = {1'b0, e6_r} - {3'b000, e6_den};
     wire [1:0]  lo_digit = ~u3[13] ? 2'd3 : ~u2[13] ? 2'd2 : ~u1[13] ? 2'd1 : 2'd0;
     wire [3:0]  q6 = {e6_hi, lo_digit};
+    // 0 - q6, written bit by bit: gates, where the subtraction would be a carry chain behind the
+    // compares' (timing).
+    wire [3:0]  q6_neg = {q6[3] ^ (|q6[2:0]), q6[2] ^ (|q6[1:0]), q6[1] ^ q6[0], q6[0]};
 
     reg        e7_slot, e7_edge, e7_last, e7_final, e7_broken;
     reg [3:0]  e7_delta;
@@ -472,7 +537,7 @@ module edge_stage #(
     always @(posedge aclk) begin
         if (adv) begin
             {e7_edge, e7_last, e7_final, e7_broken} <= {e6_edge, e6_last, e6_final, e6_broken};
-            e7_delta <= e6_neg ? (4'd0 - q6) : (q6[3] ? 4'd7 : q6);
+            e7_delta <= e6_neg ? q6_neg : (q6[3] ? 4'd7 : q6);
             e7_m     <= e6_m;
             e7_d     <= e6_d;
         end
@@ -495,7 +560,8 @@ module edge_stage #(
     // goes (the gradient block's register slice keeps it from the front end's input). `hold`
     // (the trailer first, the pixel behind it waits) is a flip-flop: tr_pend and z_slot of the
     // next clock.
-    wire o_ready = ~o_v | m_axis_tready;
+    (* keep *) wire o_ready;  // kept (with adv, take): one gate each, not a deeper tree
+    assign o_ready = ~o_v | m_axis_tready;
     assign adv   = o_ready & ~hold;
 
     wire        trailer  = tr_pend | (z_slot & z_final & ~z_edge);

@@ -32,17 +32,14 @@ module frontend #(
 
     output wire        error                   // one clock per framing error (input-timed)
 );
-    localparam MAX_ROWS = 2048;
-
-    wire [15:0] height = (cfg_height > MAX_ROWS) ? 16'd0 : cfg_height;
-
     // The gradient stream between the two blocks (the benches watch it too).
     wire [31:0] g_tdata;
     wire [1:0]  g_tuser;
     wire        g_tlast, g_tvalid, g_tready;
 
-    gradient #(.MAX_WIDTH(MAX_WIDTH)) u_gradient (
-        .aclk(aclk), .aresetn(aresetn), .cfg_height(height),
+    // The gradient block refuses a cfg_height above MAX_ROWS like 0.
+    gradient #(.MAX_WIDTH(MAX_WIDTH), .MAX_ROWS(2048)) u_gradient (
+        .aclk(aclk), .aresetn(aresetn), .cfg_height(cfg_height),
         .s_axis_tdata(s_axis_tdata), .s_axis_tuser(s_axis_tuser), .s_axis_tlast(s_axis_tlast),
         .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
         .m_axis_tdata(g_tdata), .m_axis_tuser(g_tuser), .m_axis_tlast(g_tlast),

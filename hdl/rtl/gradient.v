@@ -21,8 +21,8 @@
 //       next clock with C as its own right neighbour; the column at x = 0 that may enter in
 //       that clock emits nothing, so input and output keep one beat per clock.
 //   S2  gx, gy; magnitude fold (gradient_dir_fold). A fill column becomes a fill word here.
-//   S3  lo, hi, 3*hi; the first sector compare and 19*hi (gradient_dir_s51), lo + hi.
-//   S3b the second compare and the direction bin (gradient_dir_bin).
+//   S3  lo, hi; 3*hi, then 51*hi and 19*hi (gradient_dir_s51), lo + hi.
+//   S3b the two sector compares and the direction bin (gradient_dir_bin).
 //   S4  output word, into the register slice.
 // Latency without stalls: a pixel's word leaves W + 7 clocks after the pixel was accepted
 // (one row plus one pixel for its right and lower neighbours, five stages, the slice).
@@ -45,7 +45,8 @@
 
 module gradient #(
     parameter MAX_WIDTH  = 640,                // pixels per row, upper bound of the learnt width
-    parameter PIXEL_BITS = 8                   // grey level bits; the word's fields need 8
+    parameter PIXEL_BITS = 8,                  // grey level bits; the word's fields need 8
+    parameter MAX_ROWS   = 65535               // a cfg_height above it is refused like 0
 ) (
     input  wire                  aclk,
     input  wire                  aresetn,      // synchronous, active low
@@ -87,10 +88,14 @@ module gradient #(
         if (PIXEL_BITS != 8) begin : g_check_pixel
             gradient_PIXEL_BITS_must_be_8 u_bad_pixel_bits ();
         end
+        if (MAX_ROWS < 1 || MAX_ROWS > 65535) begin : g_check_rows
+            gradient_MAX_ROWS_must_be_1_to_65535 u_bad_max_rows ();
+        end
     endgenerate
 
     localparam XW = (MAX_WIDTH < 2) ? 1 : clog2(MAX_WIDTH);   // column index bits
     localparam [XW-1:0] MAXM2 = (MAX_WIDTH < 2) ? 0 : MAX_WIDTH - 2;
+    localparam RW = clog2(MAX_ROWS + 1);                      // row counter bits
 
     wire rst = ~aresetn;
 
@@ -105,10 +110,12 @@ module gradient #(
     reg [XW-1:0] x;           // column of the next beat
     reg          x_zero;      // x == 0
     reg [XW-1:0] wm1;         // W - 1, learnt at the end of row 0
+    reg [XW-1:0] wm2;         // W - 2 (modulo 2^XW), learnt with it: x + 1 == W - 1 is
+                              // x == wm2, with no adder in front of the comparison
     reg          w_one;       // W == 1
     reg          x_last;      // x == W - 1 (rows >= 1)
     reg          x_max;       // x == MAX_WIDTH - 1
-    reg [15:0]   rows;        // rows of the frame not yet completed, including the current one
+    reg [RW-1:0] rows;        // rows of the frame not yet completed, including the current one
     reg          rows_one;    // rows == 1
 
     reg          tail;        // the tail runs: a column a clock (flush or fill)
@@ -117,6 +124,7 @@ module gradient #(
     reg [XW-1:0] t;           // the tail's column
     reg          t_zero;      // t == 0
     reg [XW-1:0] t_wm1;       // W - 1 of the tail's frame
+    reg          t_end;       // t == t_wm1 (while the tail runs), kept a step ahead
     reg          pending;     // a one-row frame's flush waits for the tail before it
 
     // The pipeline advances while the register slice's skid is empty (a flip-flop: no logic
@@ -131,9 +139,21 @@ module gradient #(
     // beat before is written there (wz): the block RAM cannot give the data being written.
     reg          wz;          // S1 writes column 0 in this clock
     // The tail waits with it (and the input with the tail, which must keep ahead of row 0).
-    wire         rd0_wait = wz & ((x_zero & active & ~learn) | (tail & t_zero & ~t_fill));
-    assign s_axis_tready = rdy & adv & ~err_hold & ~pending & ~(tail & active & ~learn) &
-                           ~rd0_wait;
+    //   rd0_wait = wz & ((x_zero & active & ~learn) | (tail & t_zero & ~t_fill))
+    //   s_axis_tready = rdy & adv & ~err_hold & ~pending & ~(tail & active & ~learn) &
+    //                   ~rd0_wait
+    //   t_step = adv & tail & ~rd0_wait
+    // All but adv is a function of flip-flops; it is kept in flip-flops made from those
+    // registers' next values (in_go, t_go below), and so are the parts of push_in that come
+    // from the state (go_t, go_n): push_in, which enables ~60 flip-flops, is then two gates
+    // from the flip-flops instead of five or six (timing on iCE40). The expressions they
+    // stand for are checked in simulation and asserted in the bounded proof (below).
+    reg          in_go;       // s_axis_tready but for adv
+    reg          t_go;        // tail & ~rd0_wait
+    // push_in of a beat without tuser, but for adv and tvalid, by its tlast:
+    reg          go_t;        // in_go & active & (learn | x_last)
+    reg          go_n;        // in_go & active & (learn ? ~x_max : ~x_last)
+    assign s_axis_tready = adv & in_go;
 
     wire acc = s_axis_tvalid & s_axis_tready;
 
@@ -143,9 +163,11 @@ module gradient #(
     // ahead, so that none is in the path from s_axis_tready to the state.
     wire          sof      = s_axis_tuser;
     wire          xb_zero  = sof | x_zero;
-    wire [15:0]   rows_b   = sof ? cfg_height : rows;
-    wire [15:0]   rows_n   = rows_b - {15'd0, s_axis_tlast};
-    wire          h_zero   = (cfg_height == 16'd0);
+    // A height above MAX_ROWS is refused like 0; a frame is started only with a height it
+    // accepts, so the row counter needs RW bits.
+    wire [RW-1:0] rows_b   = sof ? cfg_height[RW-1:0] : rows;
+    wire [RW-1:0] rows_n   = rows_b - {{(RW-1){1'b0}}, s_axis_tlast};
+    wire          h_zero   = (cfg_height == 16'd0) || (cfg_height > MAX_ROWS);
     wire          last_row = sof ? (cfg_height == 16'd1) : rows_one;
     wire          at_wm1   = x_last;
     wire          at_max   = sof ? (MAX_WIDTH == 1) : x_max;
@@ -154,6 +176,11 @@ module gradient #(
     wire cont     = ~sof & active;
     wire in_row0  = start | (cont & learn);
     wire in_row   = cont & ~learn;
+    // in_row0 of a beat that enters the pipeline (push_in: a start of frame then has a height,
+    // another beat an active frame), without the height's comparison. The registers loaded
+    // while no tail runs take it too: only their load in the clock a tail starts counts, and
+    // that clock has push_in, a fill (fill_wb) or pending.
+    wire row0_p   = sof | learn;
     wire ok_row0  = s_axis_tlast | ~at_max;            // row 0 must end by column MAX_WIDTH-1
     wire ok_row   = (s_axis_tlast == at_wm1);          // rows >= 1 must end exactly at W-1
     wire good     = (in_row0 & ok_row0) | (in_row & ok_row);
@@ -163,20 +190,29 @@ module gradient #(
     wire err_any  = err_sof | err_zero | err_len;
     wire err_two  = err_sof & (err_zero | err_len);   // err_len here only if MAX_WIDTH == 1
 
-    wire push_in  = acc & good;                        // accepted pixel enters the pipeline
+    // Accepted pixel enters the pipeline: acc & good, from go_t and go_n. Kept as three
+    // signals (keep: synthesis would fold them into a deeper tree), so that push_in is two
+    // gates from the flip-flops.
+    wire good_sof = ~h_zero & (s_axis_tlast | (MAX_WIDTH != 1));
+    (* keep *) wire p_row;                             // push_in of a beat without tuser
+    (* keep *) wire p_sof;                             // push_in of a start of frame
+    (* keep *) wire push_in;
+    assign p_row   = adv & (s_axis_tlast ? go_t : go_n);
+    assign p_sof   = adv & in_go & good_sof;
+    assign push_in = s_axis_tvalid & (sof ? p_sof : p_row);
     // Tail requests: the frame's last beat (flush), or an error once row 0 is complete (fill
     // from the column of the word in progress: x - 1, or 0 at a row start).
     wire req_flush = push_in & s_axis_tlast & last_row;
     wire req_fill  = acc & active & ~learn & (sof | ~ok_row);
     wire go_now    = (req_flush | req_fill) & ~tail;   // else (one-row frame) pending
-    wire t_step    = adv & tail & ~rd0_wait;           // the tail's column enters S1
-    wire t_end     = (t == t_wm1);
+    wire t_step    = adv & t_go;                       // the tail's column enters S1
 
     wire [XW-1:0] rd_addr = tail ? t : x;
 
     // Column counter: cleared after the last column, 1 after a start-of-frame beat. The clear
     // and the load map onto the flip-flops' synchronous reset.
     wire [XW-1:0] x_inc = x + 1'b1;
+    wire [XW-1:0] x_dec = x - 1'b1;
 
     always @(posedge aclk) begin
         if (rst || (push_in && s_axis_tlast))
@@ -196,6 +232,20 @@ module gradient #(
         end
     endgenerate
 
+    // Next values (without reset) of the registers in_go, t_go, go_t and go_n are made from.
+    wire active_nx   = push_in ? ~(s_axis_tlast & last_row) : (active & ~(acc & err_any));
+    wire learn_nx    = push_in ? (row0_p & ~s_axis_tlast) : learn;
+    wire x_zero_nx   = push_in ? s_axis_tlast : x_zero;
+    wire wz_nx       = adv ? (push_in & xb_zero) : wz;
+    wire err_hold_nx = acc & err_two;
+    // x after this beat: 0 after an end of line (the last column when W == 1), else x + 1 (1
+    // after a start of frame).
+    wire x_last_nx   = ~push_in ? x_last :
+                       s_axis_tlast ? (row0_p ? xb_zero : w_one) : (~sof & (x == wm2));
+    wire x_max_nx    = ~push_in ? x_max :
+                       s_axis_tlast ? (MAX_WIDTH == 1) :
+                       (sof ? (MAX_WIDTH == 2) : (MAX_WIDTH >= 2 && x == MAXM2));
+
     always @(posedge aclk) begin
         if (rst) begin
             rdy      <= 1'b0;
@@ -208,34 +258,29 @@ module gradient #(
             x_zero   <= 1'b1;
         end else begin
             rdy      <= 1'b1;
-            if (adv)
-                wz   <= push_in & xb_zero;
+            wz       <= wz_nx;
             error    <= (acc & err_any) | err_hold;
-            err_hold <= acc & err_two;
+            err_hold <= err_hold_nx;
+            active   <= active_nx;
+            learn    <= learn_nx;
+            x_zero   <= x_zero_nx;
+            x_last   <= x_last_nx;
+            x_max    <= x_max_nx;
 
             if (push_in) begin
-                x_zero   <= s_axis_tlast;
-                // x after this beat: 0 after an end of line (the last column when W == 1),
-                // else x + 1 (1 after a start of frame).
-                x_last   <= s_axis_tlast ? (in_row0 ? xb_zero : w_one) : (~sof & (x_inc == wm1));
-                x_max    <= s_axis_tlast ? (MAX_WIDTH == 1) :
-                            (sof ? (MAX_WIDTH == 2) : (MAX_WIDTH >= 2 && x == MAXM2));
                 rows     <= rows_n;
-                rows_one <= (rows_n == 16'd1);
-                learn  <= in_row0 & ~s_axis_tlast;
-                active <= ~(s_axis_tlast & last_row);
-                if (start)
+                rows_one <= (rows_n == {{(RW-1){1'b0}}, 1'b1});
+                if (sof)
                     first <= 1'b1;
-                else if (s_axis_tlast & in_row)
+                else if (s_axis_tlast & ~learn)
                     first <= 1'b0;
-                if (s_axis_tlast & in_row0) begin
+                if (s_axis_tlast & row0_p) begin
                     // A mask rather than sof ? 0 : x, so that synthesis does not share one
                     // multiplexer with s1_wx (which then uses its flip-flops' reset).
                     wm1   <= x & {XW{~sof}};
+                    wm2   <= sof ? {XW{1'b1}} : x_dec;
                     w_one <= xb_zero;
                 end
-            end else if (acc & err_any) begin
-                active <= 1'b0;                        // frame abandoned
             end
         end
     end
@@ -247,20 +292,73 @@ module gradient #(
     // acceptance of the beat.
     wire          fill_wb  = ~pending & active & ~learn & (sof | ~ok_row);
     wire          skip_wb  = fill_wb & ~x_zero;             // the fill starts at x - 1
-    wire [XW-1:0] x_dec    = x - 1'b1;
+
+    wire pending_nx = (req_flush & (tail | req_fill)) | (pending & tail);
+    wire tail_nx    = go_now | (pending & ~tail) | (tail & ~(t_step & t_end));
+    wire t_fill_nx  = tail ? t_fill : fill_wb;
+    wire t_zero_nx  = tail ? (t_zero & ~t_step) : (~skip_wb | (x == 1));
 
     always @(posedge aclk) begin
         if (rst) begin
             tail    <= 1'b0;
             pending <= 1'b0;
         end else begin
-            if (req_flush & (tail | req_fill))
-                pending <= 1'b1;
-            else if (~tail)
-                pending <= 1'b0;
-            tail <= go_now | (pending & ~tail) | (tail & ~(t_step & t_end));
+            pending <= pending_nx;
+            tail    <= tail_nx;
         end
     end
+
+    // in_go, t_go, go_t and go_n from the next values (see s_axis_tready); rdy's next value
+    // is 1.
+    wire rd0_wait_nx = wz_nx & ((x_zero_nx & active_nx & ~learn_nx) |
+                                (tail_nx & t_zero_nx & ~t_fill_nx));
+
+    wire in_go_nx    = ~err_hold_nx & ~pending_nx & ~(tail_nx & active_nx & ~learn_nx) &
+                       ~rd0_wait_nx;
+
+    always @(posedge aclk) begin
+        if (rst) begin
+            in_go <= 1'b0;
+            t_go  <= 1'b0;
+            go_t  <= 1'b0;
+            go_n  <= 1'b0;
+        end else begin
+            in_go <= in_go_nx;
+            t_go  <= tail_nx & ~rd0_wait_nx;
+            go_t  <= in_go_nx & active_nx & (learn_nx | x_last_nx);
+            go_n  <= in_go_nx & active_nx & (learn_nx ? ~x_max_nx : ~x_last_nx);
+        end
+    end
+
+`ifndef SYNTHESIS
+    // in_go, t_go, go_t, go_n, push_in, t_end and row0_p equal the expressions they stand
+    // for, from the first reset on: checked in simulation (the benches stop on a difference),
+    // and asserted in the bounded proof (hdl/formal/).
+    reg          chk_go = 1'b0;
+    wire         rd0_wait = wz & ((x_zero & active & ~learn) | (tail & t_zero & ~t_fill));
+    wire         go_same  = (in_go === (rdy & ~err_hold & ~pending & ~(tail & active & ~learn) &
+                                        ~rd0_wait)) && (t_go === (tail & ~rd0_wait)) &&
+                            (go_t === (in_go & active & (learn | x_last))) &&
+                            (go_n === (in_go & active & (learn ? ~x_max : ~x_last))) &&
+                            (push_in === (acc & good)) && (!tail || t_end === (t == t_wm1)) &&
+                            (!push_in || row0_p === in_row0);
+    always @(posedge aclk) begin
+`ifdef FORMAL
+        if (chk_go)
+            assert(go_same);
+`else
+        if (chk_go && !go_same) begin
+            $display("gradient: in_go, t_go, go_t, go_n or t_end differ from their expressions",
+                     " at %0t", $time);
+            $fatal(1);
+        end
+`endif
+        if (rst)
+            chk_go <= 1'b1;
+    end
+`endif
+
+    wire [XW-1:0] t_inc = t + 1'b1;
 
     always @(posedge aclk) begin
         if (~tail) begin
@@ -268,13 +366,18 @@ module gradient #(
             // Flush: output row H-1, output row 0 when the request comes in row 0 (or from a
             // one-row frame's pending flush). Fill: the row in progress, output row 0 while
             // input row 1 arrives (first still set).
-            t_first <= pending | (fill_wb ? first : in_row0);
-            t_wm1   <= (pending | fill_wb | ~in_row0) ? wm1 : (x & {XW{~sof}});
+            t_first <= pending | (fill_wb ? first : row0_p);
+            t_wm1   <= (pending | fill_wb | ~row0_p) ? wm1 : (x & {XW{~sof}});
             t       <= skip_wb ? x_dec : {XW{1'b0}};
             t_zero  <= ~skip_wb | (x == 1);
+            // t == t_wm1 for those values: a fill from x - 1 is never at its row's end
+            // (x <= W - 1 in rows >= 1); else t = 0, and t_wm1 = 0 when W == 1 or, for a
+            // one-row frame's flush, when this beat is in column 0.
+            t_end   <= ~skip_wb & ((pending | fill_wb | ~row0_p) ? w_one : xb_zero);
         end else if (t_step) begin
-            t      <= t + 1'b1;
+            t      <= t_inc;
             t_zero <= 1'b0;
+            t_end  <= (t_inc == t_wm1);
         end
     end
 
@@ -330,8 +433,8 @@ module gradient #(
         if (adv) begin
             s1_p     <= s_axis_tdata[7:0];
             s1_wx    <= sof ? {XW{1'b0}} : x;
-            s1_wrow0 <= in_row0;
-            s1_row0  <= ~t_step & in_row0;
+            s1_wrow0 <= row0_p;
+            s1_row0  <= ~t_step & row0_p;
             s1_flush <= t_step & ~t_fill;
             s1_fill  <= t_step & t_fill;
             s1_x0    <= t_step ? t_zero : xb_zero;
@@ -400,10 +503,8 @@ module gradient #(
 
     wire [7:0] f_lo, f_hi;
     wire       f_swap;
-    wire [9:0] f_hi3;
 
-    gradient_dir_fold u_fold (.gx(s2_gx), .gy(s2_gy), .lo(f_lo), .hi(f_hi), .swap(f_swap),
-                              .hi3(f_hi3));
+    gradient_dir_fold u_fold (.gx(s2_gx), .gy(s2_gy), .lo(f_lo), .hi(f_hi), .swap(f_swap));
 
     // ------------------------------------------------------------------------------------
     // S3: lo, hi
@@ -411,7 +512,6 @@ module gradient #(
     reg       s3_valid, s3_tuser, s3_tlast, s3_eof, s3_fill, s3_swap;
     reg [8:0] s3_gx, s3_gy;
     reg [7:0] s3_lo, s3_hi;
-    reg [9:0] s3_hi3;
 
     always @(posedge aclk) begin
         if (rst) begin
@@ -427,19 +527,19 @@ module gradient #(
             s3_lo    <= f_lo;
             s3_hi    <= f_hi;
             s3_swap  <= f_swap;
-            s3_hi3   <= f_hi3;
         end
     end
 
-    wire        d_le51;
+    wire [5:0]  d_m51h;
     wire [12:0] d_m19;
 
-    gradient_dir_s51 u_s51 (.lo(s3_lo), .hi(s3_hi), .hi3(s3_hi3), .le51(d_le51), .m19(d_m19));
+    gradient_dir_s51 u_s51 (.hi(s3_hi), .m51h(d_m51h), .m19(d_m19));
 
     // ------------------------------------------------------------------------------------
-    // S3b: 51*hi compared, 19*hi; magnitude lo + hi
+    // S3b: 51*hi (its upper bits) and 19*hi; magnitude lo + hi
     // ------------------------------------------------------------------------------------
-    reg        s3b_valid, s3b_tuser, s3b_tlast, s3b_eof, s3b_fill, s3b_swap, s3b_le51;
+    reg        s3b_valid, s3b_tuser, s3b_tlast, s3b_eof, s3b_fill, s3b_swap;
+    reg [5:0]  s3b_m51h;
     reg [8:0]  s3b_gx, s3b_gy, s3b_mag;
     reg [7:0]  s3b_lo;
     reg [12:0] s3b_m19;
@@ -454,7 +554,7 @@ module gradient #(
             s3b_eof   <= s3_eof;
             s3b_fill  <= s3_fill;
             s3b_swap  <= s3_swap;
-            s3b_le51  <= d_le51;
+            s3b_m51h  <= d_m51h;
             s3b_gx    <= s3_gx;
             s3b_gy    <= s3_gy;
             s3b_mag   <= {1'b0, s3_lo} + {1'b0, s3_hi};    // |gx| + |gy|
@@ -465,7 +565,7 @@ module gradient #(
 
     wire [3:0] dir;
 
-    gradient_dir_bin u_bin (.lo(s3b_lo), .m19(s3b_m19), .le51(s3b_le51), .swap(s3b_swap),
+    gradient_dir_bin u_bin (.lo(s3b_lo), .m19(s3b_m19), .m51h(s3b_m51h), .swap(s3b_swap),
                             .negx(s3b_gx[8]), .negy(s3b_gy[8]), .dir(dir));
 
     reg [31:0] word;

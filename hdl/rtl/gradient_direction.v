@@ -3,9 +3,10 @@
 // Direction bin of a gradient (docs/gradient.md, "Direction"), combinational.
 //
 // Split in three parts so that hdl/rtl/gradient.v can put pipeline registers between them:
-//   gradient_dir_fold: |gx|, |gy| folded into lo = min, hi = max, swap = (|gy| > |gx|), 3*hi
-//   gradient_dir_s51:  the first sector compare (256*lo <= 51*hi) and 19*hi
-//   gradient_dir_bin:  the second compare (256*lo <= 171*hi) and quadrant mapping to the bin
+//   gradient_dir_fold: |gx|, |gy| folded into lo = min, hi = max, swap = (|gy| > |gx|)
+//   gradient_dir_s51:  3*hi, the upper bits of 51*hi, and 19*hi
+//   gradient_dir_bin:  the two sector compares (256*lo <= 51*hi, 256*lo <= 171*hi) and
+//                      quadrant mapping to the bin
 // gradient_direction is exactly the three in a row, so the exhaustive test of
 // gradient_direction (hdl/bench/tb_direction.v) covers the logic used in the pipeline.
 
@@ -14,8 +15,7 @@ module gradient_dir_fold (
     input  wire signed [8:0] gy,     // grey levels, -255..255
     output wire        [7:0] lo,     // min(|gx|, |gy|)
     output wire        [7:0] hi,     // max(|gx|, |gy|)
-    output wire              swap,   // |gy| > |gx|: reflect the sector into 45..90 degrees
-    output wire        [9:0] hi3     // 3*hi, first product term of gradient_dir_bin
+    output wire              swap    // |gy| > |gx|: reflect the sector into 45..90 degrees
 );
     // |v| = v < 0 ? ~(v - 1) : v. Adding the sign bit replicated (0 or -1) needs no inverted
     // carry operand, so each magnitude is one carry chain.
@@ -24,44 +24,40 @@ module gradient_dir_fold (
     wire [7:0] ax = tx[7:0] ^ {8{gx[8]}};   // |v| <= 255 for the specified input range
     wire [7:0] ay = ty[7:0] ^ {8{gy[8]}};
 
-    // 3*|gx| and 3*|gy| beside the compare, one of them chosen: no carry chain after the
-    // compare's.
-    wire [9:0] ax3 = {1'b0, ax, 1'b0} + {2'b0, ax};
-    wire [9:0] ay3 = {1'b0, ay, 1'b0} + {2'b0, ay};
-
-    assign swap = (ay > ax);
+    // ay > ax as the borrow of ax - ay: one carry chain (a comparison operator is mapped onto a
+    // ripple of LUTs instead, eight levels deep).
+    wire [8:0] d_xy = {1'b0, ax} - {1'b0, ay};
+    assign swap = d_xy[8];
     assign lo   = swap ? ax : ay;
     assign hi   = swap ? ay : ax;
-    assign hi3  = swap ? ay3 : ax3;
 endmodule
 
 module gradient_dir_s51 (
-    input  wire [7:0]  lo,
     input  wire [7:0]  hi,
-    input  wire [9:0]  hi3,          // 3*hi (from gradient_dir_fold)
-    output wire        le51,         // 256*lo <= 51*hi: sector 0 (implies le171)
+    output wire [5:0]  m51h,         // floor(51*hi / 256), for gradient_dir_bin's first compare
     output wire [12:0] m19           // 19*hi <= 4845, for gradient_dir_bin's 171*hi
 );
     // Products of the rule, factored to share a term (shifts and adds only):
     //   51*hi = 17*(3*hi),  171*hi = 9*(19*hi) with 19*hi = 16*hi + 3*hi.
+    wire [9:0]  hi3 = {1'b0, hi, 1'b0} + {2'b0, hi};                // 3*hi   <= 765
     wire [13:0] m51 = {hi3, 4'b0} + {4'b0, hi3};                    // 51*hi  <= 13005
-    assign m19 = {1'b0, hi, 4'b0} + {3'b0, hi3};
-
-    // 256*lo <= k*hi  <=>  lo <= floor(k*hi / 256), so only the upper byte is compared.
-    assign le51 = ({2'b0, lo} <= m51[13:8]);
+    assign m19  = {1'b0, hi, 4'b0} + {3'b0, hi3};
+    assign m51h = m51[13:8];
 endmodule
 
 module gradient_dir_bin (
     input  wire [7:0]  lo,
     input  wire [12:0] m19,          // 19*hi (gradient_dir_s51)
-    input  wire        le51,
+    input  wire [5:0]  m51h,         // floor(51*hi / 256) (gradient_dir_s51)
     input  wire        swap,
     input  wire        negx,         // gx < 0
     input  wire        negy,         // gy < 0
     output reg  [3:0]  dir           // bin 0..15, 22.5 degrees per bin
 );
+    // 256*lo <= k*hi  <=>  lo <= floor(k*hi / 256), so only the upper byte is compared.
     wire [15:0] m171 = {m19, 3'b0} + {3'b0, m19};                   // 171*hi <= 43605
     wire le171 = (lo <= m171[15:8]);             // sector 0 or 1
+    wire le51  = ({2'b0, lo} <= m51h);           // sector 0 (implies le171)
 
     // bin = s, 8 - s, 8 + s or (16 - s) mod 16 by quadrant, s = sector reflected when swap;
     // written out as a table so that it maps onto a few LUTs instead of 4-bit adders.
@@ -98,12 +94,12 @@ module gradient_direction (
     output wire        [3:0] dir
 );
     wire [7:0]  lo, hi;
-    wire        swap, le51;
-    wire [9:0]  hi3;
+    wire        swap;
+    wire [5:0]  m51h;
     wire [12:0] m19;
 
-    gradient_dir_fold u_fold (.gx(gx), .gy(gy), .lo(lo), .hi(hi), .swap(swap), .hi3(hi3));
-    gradient_dir_s51  u_s51  (.lo(lo), .hi(hi), .hi3(hi3), .le51(le51), .m19(m19));
-    gradient_dir_bin  u_bin  (.lo(lo), .m19(m19), .le51(le51), .swap(swap),
+    gradient_dir_fold u_fold (.gx(gx), .gy(gy), .lo(lo), .hi(hi), .swap(swap));
+    gradient_dir_s51  u_s51  (.hi(hi), .m51h(m51h), .m19(m19));
+    gradient_dir_bin  u_bin  (.lo(lo), .m19(m19), .m51h(m51h), .swap(swap),
                               .negx(gx[8]), .negy(gy[8]), .dir(dir));
 endmodule
