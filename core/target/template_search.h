@@ -69,15 +69,27 @@ bool cut_template(const PixelRegion& region, int32_t x, int32_t y, uint8_t w, ui
     return true;
 }
 
-// A rectangle of a streamed frame kept as its rows go by: at most MaxW × MaxH pixels.
+// A rectangle of a streamed frame kept as its rows go by: at most MaxW × MaxH pixels. With a
+// step s > 1 it keeps the frame shrunk by s: stored pixel (X, Y) is the rounded mean of the
+// frame's s × s block [ox + s·X, ox + s·X + s) × [oy + s·Y, oy + s·Y + s), the grid's origin
+// (ox, oy) in [0, s)² chosen per frame (a tracker puts it where the target's template starts,
+// so that its blocks hold the same pixels as the template's did), and the region's coordinates
+// are those block indices X, Y >= 0. A target of up to s·MaxTemplate px thus becomes a template
+// of MaxTemplate. At the right and bottom edges a block is the mean of the pixels the frame has.
 template <uint16_t MaxW, uint16_t MaxH>
 class RegionCapture {
 public:
-    // Keeps [x0, x0 + w) × [y0, y0 + h) clipped to the frame (and to MaxW × MaxH around the
-    // requested box's centre). An empty intersection keeps nothing.
+    // s² · 255 must fit the uint16_t block sums.
+    static constexpr uint16_t kMaxStep = 16;
+
+    // Keeps [x0, x0 + w) × [y0, y0 + h) (in blocks of step × step frame pixels, 1..kMaxStep,
+    // the grid from (ox, oy), each in [0, step)) clipped to the frame (and to MaxW × MaxH around
+    // the requested box's centre). An empty intersection, or a step or origin out of range,
+    // keeps nothing.
     // Arguments in 64 bits: the box may lie anywhere in int32 (TargetPipeline::set_target takes
     // any position), and its margins and far ends beyond.
-    void begin(int64_t x0, int64_t y0, int64_t w, int64_t h, uint16_t frame_w, uint16_t frame_h) {
+    void begin(int64_t x0, int64_t y0, int64_t w, int64_t h, uint16_t frame_w, uint16_t frame_h,
+               uint16_t step = 1, uint16_t ox = 0, uint16_t oy = 0) {
         int64_t left = x0, top = y0, width = w, height = h;
         if (width > MaxW) {
             left += (width - MaxW) / 2;
@@ -88,10 +100,14 @@ public:
             height = MaxH;
         }
         int64_t right = left + width, bottom = top + height;
+        const bool grid_ok =
+            step >= 1 && step <= kMaxStep && ox < step && oy < step && ox < frame_w && oy < frame_h;
+        const int64_t blocks_w = grid_ok ? (frame_w - ox + step - 1) / step : 0;
+        const int64_t blocks_h = grid_ok ? (frame_h - oy + step - 1) / step : 0;
         if (left < 0) left = 0;
         if (top < 0) top = 0;
-        if (right > frame_w) right = frame_w;
-        if (bottom > frame_h) bottom = frame_h;
+        if (right > blocks_w) right = blocks_w;
+        if (bottom > blocks_h) bottom = blocks_h;
         if (right <= left || bottom <= top)
             left = top = right = bottom = 0;  // empty: keeps nothing
         region_.x0 = static_cast<int32_t>(left);
@@ -100,17 +116,56 @@ public:
         region_.h = static_cast<uint16_t>(bottom - top);
         region_.stride = MaxW;
         region_.pixels = pixels_;
+        step_ = step;
+        ox_ = ox;
+        oy_ = oy;
+        frame_w_ = frame_w;
+        frame_h_ = frame_h;
+        if (step_ > 1) memset(sums_, 0, sizeof sums_);
     }
-    // Row y of the frame (pixels[0 .. frame width)).
+    // Row y of the frame (pixels[0 .. frame width)), rows in order.
     void push_row(int32_t y, const uint8_t* row) {
-        if (y < region_.y0 || y >= region_.y0 + region_.h) return;
-        memcpy(pixels_ + static_cast<uint32_t>(y - region_.y0) * MaxW, row + region_.x0, region_.w);
+        if (step_ <= 1) {
+            if (y < region_.y0 || y >= region_.y0 + region_.h) return;
+            memcpy(pixels_ + static_cast<uint32_t>(y - region_.y0) * MaxW, row + region_.x0,
+                   region_.w);
+            return;
+        }
+        const int32_t s = step_;
+        if (region_.w == 0 || y < oy_) return;
+        const int32_t block_row = (y - oy_) / s;
+        if (block_row < region_.y0 || block_row >= region_.y0 + region_.h) return;
+        // Frame column of block X's first pixel, and its columns: s, or fewer in a block cut by
+        // the frame's right edge.
+        auto first = [&](int32_t block) { return ox_ + block * s; };
+        auto cols = [&](int32_t block) {
+            const int32_t left = frame_w_ - first(block);
+            return left < s ? left : s;
+        };
+        for (uint16_t i = 0; i < region_.w; ++i) {
+            const int32_t block = region_.x0 + i;
+            const uint8_t* in = row + first(block);
+            uint32_t sum = sums_[i];
+            for (int32_t k = 0, n = cols(block); k < n; ++k) sum += in[k];
+            sums_[i] = static_cast<uint16_t>(sum);
+        }
+        const int32_t rows = (y - oy_) % s + 1;    // of the block row so far
+        if (rows < s && y + 1 < frame_h_) return;  // the block row goes on
+        uint8_t* out = pixels_ + static_cast<uint32_t>(block_row - region_.y0) * MaxW;
+        for (uint16_t i = 0; i < region_.w; ++i) {
+            const uint32_t area = static_cast<uint32_t>(rows * cols(region_.x0 + i));
+            out[i] = static_cast<uint8_t>((sums_[i] + area / 2) / area);
+            sums_[i] = 0;
+        }
     }
     const PixelRegion& region() const { return region_; }
 
 private:
     uint8_t pixels_[static_cast<uint32_t>(MaxW) * MaxH] = {};
+    uint16_t sums_[MaxW] = {};  // the block row in progress (step > 1)
     PixelRegion region_;
+    uint16_t step_ = 1, ox_ = 0, oy_ = 0;
+    int32_t frame_w_ = 0, frame_h_ = 0;
 };
 
 }  // namespace qt

@@ -16,7 +16,9 @@ std::string target_usage() {
            "  SEQUENCE is a Y4M file, a printf pattern of PGM/PPM files (frames/f%03d.pgm), one\n"
            "  PGM/PPM file, or - for standard input (Y4M, or PGM/PPM images one after another);\n"
            "  every frame the same size; frames larger than 640 x 480 pixels are binned to fit\n"
-           "  (--bin). The target is the box X,Y,W,H of frame 0 (input pixels; at most 24 x 24\n"
+           "  (--bin). The target is the box X,Y,W,H of frame 0 (input pixels; at most " +
+           std::to_string(kMaxRoiSide) +
+           " px a side\n"
            "  once binned); one JSON line per frame {\"frame\",\"x\",\"y\",\"state\",...}\n"
            "  (see docs/cli.md); x, y may lie outside the image while the target is out of view.\n"
            "options (--name VALUE or --name=VALUE):\n" +
@@ -54,15 +56,17 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
             const int x0 = floor_div(options.roi_x, bin), y0 = floor_div(options.roi_y, bin);
             const int w = floor_div(options.roi_x + options.roi_w - 1, bin) - x0 + 1;
             const int h = floor_div(options.roi_y + options.roi_h - 1, bin) - y0 + 1;
-            if (w > CliTargetCapacity::max_template || h > CliTargetCapacity::max_template) {
+            if (w > kMaxRoiSide || h > kMaxRoiSide ||
+                pipeline->set_target(x0, y0, static_cast<uint16_t>(w), static_cast<uint16_t>(h)) !=
+                    Status::ok) {
                 qt::io::print_error_line(
                     err,
-                    "quadtrack target: --roi %d,%d,%d,%d: templates are at most 24 x 24 px, this "
-                    "one is %d x %d binned by %d",
-                    options.roi_x, options.roi_y, options.roi_w, options.roi_h, w, h, bin);
+                    "quadtrack target: --roi %d,%d,%d,%d: boxes are at most %d x %d px once "
+                    "binned, this one is %d x %d binned by %d",
+                    options.roi_x, options.roi_y, options.roi_w, options.roi_h, kMaxRoiSide,
+                    kMaxRoiSide, w, h, bin);
                 return 2;
             }
-            pipeline->set_target(x0, y0, static_cast<uint8_t>(w), static_cast<uint8_t>(h));
         }
         const int width = frame.width / bin, height = frame.height / bin;
         Status s = pipeline->begin_frame(static_cast<uint16_t>(width),

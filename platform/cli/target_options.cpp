@@ -86,6 +86,9 @@ Option choice(const char* name, const char* help, std::initializer_list<E> value
             GeometryCommand::target};
 }
 
+static_assert(kMaxRoiSide == 384 && CliTargetCapacity::max_template == 24,
+              "the --roi help line gives these figures");
+
 bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
     int v[4];
     size_t start = 0;
@@ -96,11 +99,12 @@ bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
             return false;
         }
         long n = 0;
-        // Sizes up to 24 px once binned (checked when frame 0's bin factor is known): 24 × 16.
-        const long lo = i < 2 ? -100000 : 1, hi = i < 2 ? 100000 : 24 * 16;
+        // Sizes up to kMaxRoiSide px once binned (checked when frame 0's bin factor is known),
+        // binned by up to 16.
+        const long lo = i < 2 ? -100000 : 1, hi = i < 2 ? 100000 : long{kMaxRoiSide} * 16;
         std::string why;
         if (!parse_int(t.substr(start, comma - start), lo, hi, n, why)) {
-            e = std::string(i < 2 ? "position " : "size (templates are at most 24 x 24 px) ") + why;
+            e = std::string(i < 2 ? "position " : "size ") + why;
             return false;
         }
         v[i] = static_cast<int>(n);
@@ -119,8 +123,8 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
     static const FlagTable<TargetOptions, GeometryCommand> options{
         {
             {"roi", "X,Y,W,H",
-             "the target's box in frame 0: top-left pixel and size, px (W, H 1..24, or up to 24 "
-             "once binned)",
+             "the target's box in frame 0: top-left pixel and size, px (W, H up to 384 once "
+             "binned; a box over 24 px is tracked in blocks of 2..16 px)",
              [](TargetOptions o) {
                  return o.roi_set ? std::to_string(o.roi_x) + "," + std::to_string(o.roi_y) + "," +
                                         std::to_string(o.roi_w) + "," + std::to_string(o.roi_h)

@@ -10,14 +10,16 @@
 
 namespace qt::cli {
 
-// The CLI's pipeline: frames up to 640 × 480, 160 corners a frame, templates up to 24 × 24 px,
-// search windows up to 48 px around the expected position.
-// VGA frames, templates up to 24 × 24 px and a captured region up to 160 px a side.
+// The CLI's pipeline: frames up to 640 × 480, 160 corners a frame, templates up to 24 × 24
+// (a larger box is seen in blocks of 2..16 px: TargetPipeline::set_target), search windows up to
+// 48 px around the expected position, a captured region up to 160 px (or blocks) a side.
 struct CliTargetCapacity : Vga {
     static constexpr uint8_t max_template = 24;
     static constexpr uint16_t max_region = 160;
 };
 using CliTargetPipeline = TargetPipeline<CliTargetCapacity>;
+// The largest --roi side once binned, px (384: more than half a 640 x 480 frame).
+constexpr int kMaxRoiSide = static_cast<int>(CliTargetPipeline::max_box_side());
 
 enum class GeometryCommand { homography, target };
 

@@ -155,7 +155,11 @@ TEST_CASE("quadtrack target: command-line and input errors", "[target][cli]") {
     write("e001.pgm", qt::io::GreyImage(64, 40, 90));
     check_error(target({f}), 2, "--roi X,Y,W,H is required");
     check_error(target({f, "--roi", "1,2,3"}), 2, "is not x,y,w,h");
-    check_error(target({f, "--roi", "1,2,30,3"}), 2, "templates are at most 24 x 24 px");
+    check_error(target({f, "--roi", "1,2,400,3"}), 2,
+                "boxes are at most 384 x 384 px once binned, this one is 400 x 3 binned by 1");
+    check_error(target({f, "--roi", "1,2,7000,3"}), 2, "size");
+    // A box over 24 px (30 x 20: blocks of 2 px) inside the frame runs.
+    CHECK(target({f, "--roi", "1,2,30,20"}).status == 0);
     check_error(target({f, "--roi", "1,2,5,5", "--method", "magic"}), 2, "'magic' is not fused");
     check_error(target({f, "--roi", "1,2,5,5", "--reset", "maybe"}), 2, "is not on or off");
     check_error(target({f, "--roi", "60,2,10,10"}), 1, "is not wholly inside the 64 x 48 frame 0");

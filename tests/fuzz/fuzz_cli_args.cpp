@@ -111,8 +111,8 @@ void check_target(const qt::cli::TargetOptions& o, bool target) {
         QT_FUZZ_CHECK(o.roi_set);
         QT_FUZZ_CHECK(o.roi_x >= -100000 && o.roi_x <= 100000 && o.roi_y >= -100000 &&
                       o.roi_y <= 100000);
-        // Up to 24 px a side once binned, up to factor 16 (checked when frame 0 is read).
-        QT_FUZZ_CHECK(o.roi_w >= 1 && o.roi_w <= 24 * 16 && o.roi_h >= 1 && o.roi_h <= 24 * 16);
+        // Up to 384 px a side once binned, up to factor 16 (checked when frame 0 is read).
+        QT_FUZZ_CHECK(o.roi_w >= 1 && o.roi_w <= 384 * 16 && o.roi_h >= 1 && o.roi_h <= 384 * 16);
     }
 }
 

@@ -21,6 +21,7 @@
 //                    per frame), i8 turn (1/2048 turn per frame)
 //   5 target box     u8 mode; mode%4 == 0: i32 x, i32 y; 1: u8 dx, u8 dy: INT32_MAX − (d >> 1),
 //                    or INT32_MIN + (d >> 1) for odd d; else i16 x, i16 y; then u8 w, u8 h
+//                    (each doubled when mode & 4: boxes past the largest one taken)
 //   6 target begin   u16 wcode, u16 hcode
 //   7 target rows    as 1
 //   8 target finish
@@ -170,7 +171,7 @@ struct Run {
     bool target_pending = false;
     bool target_captured = false;  // the frame in progress began with the box pending
     int32_t box_x = 0, box_y = 0;
-    uint8_t box_w = 0, box_h = 0;
+    uint16_t box_w = 0, box_h = 0;
     uint32_t pixels_left = kPixelBudget;
     int finishes_left = kFinishBudget;
     bool turn_model = false;
@@ -405,9 +406,13 @@ struct Run {
             x = static_cast<int16_t>(in.u16());
             y = static_cast<int16_t>(in.u16());
         }
-        const uint8_t w = in.u8(), h = in.u8();
+        // Sizes up to 255 + 255·(u8 & 1): past the largest box (16 blocks of up to 16 px).
+        const uint16_t w = static_cast<uint16_t>(in.u8() * (mode & 4 ? 2 : 1)),
+                       h = static_cast<uint16_t>(in.u8() * (mode & 4 ? 2 : 1));
         const Status s = target.set_target(x, y, w, h);
-        const bool refuse = w == 0 || h == 0 || w > 16 || h > 16;
+        // The model: a box is taken up to 16 blocks of up to 16 px a side, wherever it lies.
+        const bool fits = w <= 16 * 16 && h <= 16 * 16;
+        const bool refuse = w == 0 || h == 0 || !fits;
         QT_FUZZ_CHECK(s == (refuse ? Status::bad_size : Status::ok));
         if (!refuse) {
             target_pending = true;  // from the next frame begun

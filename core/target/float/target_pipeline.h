@@ -85,6 +85,7 @@ class TargetPipeline {
     static constexpr uint8_t MaxTemplate = Capacity::max_template;
     static constexpr uint16_t MaxRegion = Capacity::max_region;
     static constexpr uint16_t MorphRegion = Capacity::morph_region;
+    static constexpr uint16_t kMaxStep = RegionCapture<MaxRegion, MaxRegion>::kMaxStep;
     using Morph =
         typename std::conditional<(MorphRegion > 0), MorphDetector<MorphRegion, MorphRegion>,
                                   MorphDetectorLeftOut>::type;
@@ -95,21 +96,32 @@ public:
     // The parameters of the frame begun last.
     const TargetPipelineParams& params() const { return params_; }
 
-    // Starts (or restarts) tracking at the next frame begun: the template is that frame's w × h
-    // pixels with top-left (x, y), px; the target's centre is the box's centre. Called while a
-    // frame is open, that frame goes on as before (its rows are not being kept for the box).
-    // bad_size when w or h is 0 or above MaxTemplate (the box is checked against the frame at
-    // finish()).
-    Status set_target(int32_t x, int32_t y, uint8_t w, uint8_t h) {
-        if (w == 0 || h == 0 || w > MaxTemplate || h > MaxTemplate) return Status::bad_size;
+    // Starts (or restarts) tracking at the next frame begun on the box of w × h pixels with
+    // top-left (x, y), px; the target's centre is the box's centre. Called while a frame is
+    // open, that frame goes on as before (its rows are not being kept for the box).
+    // A box of up to MaxTemplate px a side is the template pixel for pixel; a larger one is seen
+    // at a coarser step s (2..kMaxStep): the frame's s × s blocks, averaged, as pixels
+    // (RegionCapture), s the smallest that brings the box within MaxTemplate blocks a side, the
+    // blocks' grid placed on the box's top-left (and, in later frames, on the template's
+    // expected top-left). The search, the template's refresh and the morphological detector
+    // then work on blocks; the estimate, the window and the hit stay in frame pixels. bad_size
+    // when w or h is 0 or above max_box_side(); the box is checked against the frame at
+    // finish().
+    Status set_target(int32_t x, int32_t y, uint16_t w, uint16_t h) {
+        if (w == 0 || h == 0 || w > max_box_side() || h > max_box_side()) return Status::bad_size;
+        const uint16_t side = w > h ? w : h;
+        const uint16_t step = static_cast<uint16_t>((side + MaxTemplate - 1) / MaxTemplate);
         roi_x_ = x;
         roi_y_ = y;
         roi_w_ = w;
         roi_h_ = h;
+        roi_step_ = step;
         pending_target_ = true;
         target_captured_ = false;
         return Status::ok;
     }
+    // The largest box side set_target() takes, px: MaxTemplate blocks of kMaxStep px.
+    static constexpr uint32_t max_box_side() { return uint32_t{MaxTemplate} * kMaxStep; }
 
     // bad_size (and no frame: rows and finish() get not_in_frame) when a dimension is 0 or
     // above capacity; previous_frame_incomplete when rows of the frame in progress were missing
@@ -133,19 +145,32 @@ public:
         open_ = true;
         target_captured_ = pending_target_;
         if (pending_target_) {
-            // The box and a margin around it (the morphological detector's opening needs the
-            // target's surroundings).
+            // The box's blocks and a margin around them (the morphological detector's opening
+            // needs the target's surroundings).
+            step_ = roi_step_;
+            ox_ = static_cast<uint16_t>(roi_x_ - floor_div(roi_x_, step_) * step_);
+            oy_ = static_cast<uint16_t>(roi_y_ - floor_div(roi_y_, step_) * step_);
             constexpr int64_t m = MaxTemplate / 2 + 2;
-            capture_.begin(roi_x_ - m, roi_y_ - m, roi_w_ + 2 * m, roi_h_ + 2 * m, width, height);
+            capture_.begin(box_block(roi_x_, ox_) - m, box_block(roi_y_, oy_) - m,
+                           box_blocks(roi_w_) + 2 * m, box_blocks(roi_h_) + 2 * m, width, height,
+                           step_, ox_, oy_);
         } else if (tracking_) {
             const SearchWindow e = tracker_.expected();
-            const int32_t half = static_cast<int32_t>(params_.tracker.max_radius_px >
-                                                              params_.tracker.template_radius_px
-                                                          ? params_.tracker.max_radius_px
-                                                          : params_.tracker.template_radius_px) +
-                                 params_.capture_margin_px + MaxTemplate / 2 + 1;
-            capture_.begin(clamped_px(e.x) - half, clamped_px(e.y) - half, 2 * half + 1,
-                           2 * half + 1, width, height);
+            const int32_t radius = static_cast<int32_t>(params_.tracker.max_radius_px >
+                                                                params_.tracker.template_radius_px
+                                                            ? params_.tracker.max_radius_px
+                                                            : params_.tracker.template_radius_px);
+            // In blocks (px at step 1): the radius and margin rounded up, half a template; the
+            // grid on the template's expected top-left.
+            ox_ = grid_origin(e.x, offset_x_q8_, template_.w);
+            oy_ = grid_origin(e.y, offset_y_q8_, template_.h);
+            expected_x_ = e.x;
+            expected_y_ = e.y;
+            const int64_t half = (int64_t{radius} + params_.capture_margin_px + step_ - 1) / step_ +
+                                 MaxTemplate / 2 + 1;
+            capture_.begin(floor_div(clamped_px(e.x) - ox_, step_) - half,
+                           floor_div(clamped_px(e.y) - oy_, step_) - half, 2 * half + 1,
+                           2 * half + 1, width, height, step_, ox_, oy_);
         } else {
             capture_.begin(0, 0, 0, 0, width, height);
         }
@@ -212,7 +237,11 @@ public:
         if (pending_target_ && target_captured_) {
             pending_target_ = false;
             const PixelRegion& r = capture_.region();
-            if (!cut_template(r, roi_x_, roi_y_, roi_w_, roi_h_, template_)) {
+            const int32_t bx = static_cast<int32_t>(box_block(roi_x_, ox_)),
+                          by = static_cast<int32_t>(box_block(roi_y_, oy_));
+            const uint8_t bw = static_cast<uint8_t>(box_blocks(roi_w_)),
+                          bh = static_cast<uint8_t>(box_blocks(roi_h_));
+            if (!box_in_frame() || !cut_template(r, bx, by, bw, bh, template_)) {
                 tracking_ = false;
                 keep_features(cur);
                 return Status::bad_size;  // the box is not wholly inside the frame
@@ -221,10 +250,14 @@ public:
                           static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1),
                           width_, height_, params_.tracker);
             last_h_ = Homography{};
-            learn_morphology(r);
-            // The box's centre is the template's: no offset.
-            offset_x_q8_ = 0;
-            offset_y_q8_ = 0;
+            learn_morphology(r, bx, by, bw, bh);
+            // The box's centre less the template's (its blocks' centre), 1/256 px: 0 at step 1.
+            offset_x_q8_ =
+                static_cast<int32_t>(int64_t{roi_x_} * 256 + (roi_w_ - 1) * 128 -
+                                     to_frame_q8(int64_t{bx} * 256 + (bw - 1) * 128, ox_));
+            offset_y_q8_ =
+                static_cast<int32_t>(int64_t{roi_y_} * 256 + (roi_h_ - 1) * 128 -
+                                     to_frame_q8(int64_t{by} * 256 + (bh - 1) * 128, oy_));
             tracking_ = true;
             out.started = true;
             out.estimate.state = tracker_.state();
@@ -234,13 +267,16 @@ public:
             out.window = tracker_.predict(g);
             mark(TargetStage::predict);
             TargetMeasurement m;
+            // The window in blocks (pixels at step 1): centre and radius.
+            const int32_t wx = to_blocks(out.window.x, ox_), wy = to_blocks(out.window.y, oy_);
+            const uint16_t wr = static_cast<uint16_t>(
+                (out.window.radius + static_cast<float>(step_ - 1)) / static_cast<float>(step_));
             if (out.window.radius > 0 && params_.detector == TargetDetector::morphological) {
-                const MorphDetection d = morph_detector_.detect(
-                    capture_.region(), round_px(out.window.x), round_px(out.window.y),
-                    static_cast<uint16_t>(out.window.radius), polarity_, morph_);
+                const MorphDetection d =
+                    morph_detector_.detect(capture_.region(), wx, wy, wr, polarity_, morph_);
                 out.hit.found = d.found;
-                out.hit.x_q8 = d.x_q8;
-                out.hit.y_q8 = d.y_q8;
+                out.hit.x_q8 = static_cast<int32_t>(to_frame_q8(d.x_q8, ox_));
+                out.hit.y_q8 = static_cast<int32_t>(to_frame_q8(d.y_q8, oy_));
                 out.hit.score_q15 = d.found ? 32767 : 0;
                 out.hit.positions = d.clusters;
                 m.found = d.found;
@@ -248,9 +284,9 @@ public:
                 m.y = static_cast<float>(d.y_q8) * (1.0f / 256.0f);
                 m.score = d.found ? 1.0f : 0.0f;
             } else if (out.window.radius > 0) {
-                const float rad = out.window.radius;
-                out.hit = search_template(template_, capture_.region(), round_px(out.window.x),
-                                          round_px(out.window.y), static_cast<uint16_t>(rad));
+                out.hit = search_template(template_, capture_.region(), wx, wy, wr);
+                out.hit.x_q8 = static_cast<int32_t>(to_frame_q8(out.hit.x_q8, ox_));
+                out.hit.y_q8 = static_cast<int32_t>(to_frame_q8(out.hit.y_q8, oy_));
                 if (out.hit.found) {
                     m.found = true;
                     m.x = static_cast<float>(out.hit.x_q8 + offset_x_q8_) * (1.0f / 256.0f);
@@ -265,7 +301,7 @@ public:
                                   out.estimate.state == TargetState::reacquired;
             const bool every = params_.tracker.method == TargetMethod::template_only;
             if (accepted && params_.detector == TargetDetector::ncc_template &&
-                (every || out.hit.score_q15 < params_.refresh_score_q15))
+                (every || out.hit.score_q15 < params_.refresh_score_q15) && grid_was_aligned(m))
                 refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
             mark(TargetStage::refresh);
         }
@@ -299,27 +335,79 @@ private:
     // Cuts the template again centred as near as whole pixels allow on the target centre
     // (x_q8, y_q8) (1/256 px) and keeps the remainder as the centre's offset from the template's
     // centre. Nothing changes when the template would leave the captured region.
+    // (In blocks at a step above 1: the centre nearest in blocks, the offset in frame px.)
     void refresh_template(int32_t x_q8, int32_t y_q8) {
         const int32_t w = template_.w, h = template_.h;
+        const int32_t bx_q8 = static_cast<int32_t>(from_frame_q8(x_q8, ox_)),
+                      by_q8 = static_cast<int32_t>(from_frame_q8(y_q8, oy_));
         // Top-left so that the template centre tl + (w − 1)/2 is nearest the target centre.
-        const int32_t left = floor_div256(x_q8 - (w - 1) * 128 + 128);
-        const int32_t top = floor_div256(y_q8 - (h - 1) * 128 + 128);
+        const int32_t left = floor_div256(bx_q8 - (w - 1) * 128 + 128);
+        const int32_t top = floor_div256(by_q8 - (h - 1) * 128 + 128);
         if (!cut_template(capture_.region(), left, top, template_.w, template_.h, template_))
             return;
-        offset_x_q8_ = x_q8 - (left * 256 + (w - 1) * 128);
-        offset_y_q8_ = y_q8 - (top * 256 + (h - 1) * 128);
+        offset_x_q8_ =
+            static_cast<int32_t>(x_q8 - to_frame_q8(int64_t{left} * 256 + (w - 1) * 128, ox_));
+        offset_y_q8_ =
+            static_cast<int32_t>(y_q8 - to_frame_q8(int64_t{top} * 256 + (h - 1) * 128, oy_));
+    }
+    // At a step above 1, whether the target was found within a quarter block of where the grid
+    // was placed for it: only then do its blocks hold the template's pixels, so that a template
+    // cut from them carries no part-block misplacement into the track (always true at step 1).
+    bool grid_was_aligned(const TargetMeasurement& m) const {
+        if (step_ == 1) return true;
+        const float quarter = 0.25f * static_cast<float>(step_);
+        const float dx = m.x - expected_x_, dy = m.y - expected_y_;
+        return dx <= quarter && dx >= -quarter && dy <= quarter && dy >= -quarter;
+    }
+    // Blocks of step_ px across a box side of n px (the grid starts on the box's edge).
+    int64_t box_blocks(int64_t n) const { return (n + step_ - 1) / step_; }
+    // The block of the grid from origin o whose first pixel is frame pixel a.
+    int64_t box_block(int64_t a, int64_t o) const { return floor_div(a - o, step_); }
+    // ⌊a / n⌋ for n >= 1 and any a.
+    static int64_t floor_div(int64_t a, int64_t n) { return a >= 0 ? a / n : -((n - 1 - a) / n); }
+    // The grid origin, [0, step), that puts a block edge at the template's expected top-left:
+    // the target's expected centre (px) less its offset from the template's centre (1/256 px)
+    // less half the template (`blocks` a side). 0 at step 1.
+    uint16_t grid_origin(float centre, int32_t offset_q8, int32_t blocks) const {
+        if (step_ == 1) return 0;
+        const float s = static_cast<float>(step_);
+        const float left = centre - static_cast<float>(offset_q8) * (1.0f / 256.0f) -
+                           0.5f * s * static_cast<float>(blocks - 1) - 0.5f * (s - 1.0f);
+        const int64_t a = clamped_px(left < 0 ? left - 0.5f : left + 0.5f);
+        return static_cast<uint16_t>(a - floor_div(a, step_) * step_);
+    }
+    // A block coordinate (1/256 block) as frame px (1/256 px): block X's centre is frame pixel
+    // o + s·X + (s − 1)/2. The identity at step 1.
+    int64_t to_frame_q8(int64_t b_q8, uint16_t o) const {
+        return b_q8 * step_ + (step_ - 1) * 128 + int64_t{o} * 256;
+    }
+    // The inverse, rounded down to 1/256 block.
+    int64_t from_frame_q8(int64_t f_q8, uint16_t o) const {
+        return floor_div(f_q8 - (step_ - 1) * 128 - int64_t{o} * 256, step_);
+    }
+    // A window centre, px, as the nearest block (round_px at step 1).
+    int32_t to_blocks(float v, uint16_t o) const {
+        if (step_ == 1) return round_px(v);
+        const float s = static_cast<float>(step_);
+        return round_px((v - static_cast<float>(o) - 0.5f * (s - 1.0f)) / s);
+    }
+    // The box of set_target() lies wholly inside the frame begun.
+    bool box_in_frame() const {
+        return roi_x_ >= 0 && roi_y_ >= 0 && int64_t{roi_x_} + roi_w_ <= width_ &&
+               int64_t{roi_y_} + roi_h_ <= height_;
     }
     // The morphological detector's settings from the box of frame 0: an element two pixels
     // wider than the box (odd), the polarity in which a cluster is found nearest the box's
     // centre, and areas within 1/4..4× of that cluster's.
-    void learn_morphology(const PixelRegion& r) {
-        const int32_t side = roi_w_ > roi_h_ ? roi_w_ : roi_h_;
+    // (The box in blocks: bx, by, bw, bh; pixels at step 1.)
+    void learn_morphology(const PixelRegion& r, int32_t bx, int32_t by, int32_t bw, int32_t bh) {
+        const int32_t side = bw > bh ? bw : bh;
         morph_ = MorphParams{};
         morph_.element = static_cast<uint8_t>((side + 2) | 1);
         morph_.min_contrast = params_.morph_min_contrast;
         morph_.min_area = 1;
         morph_.max_area = 65535;
-        const int32_t cx = roi_x_ + (roi_w_ - 1) / 2, cy = roi_y_ + (roi_h_ - 1) / 2;
+        const int32_t cx = bx + (bw - 1) / 2, cy = by + (bh - 1) / 2;
         const uint16_t rad = static_cast<uint16_t>(side / 2);
         const MorphDetection b = morph_detector_.detect(r, cx, cy, rad, Polarity::bright, morph_);
         const MorphDetection d = morph_detector_.detect(r, cx, cy, rad, Polarity::dark, morph_);
@@ -363,8 +451,12 @@ private:
     bool pending_target_ = false;
     bool target_captured_ = false;  // this frame's rows are kept around the pending box
     int32_t offset_x_q8_ = 0, offset_y_q8_ = 0;  // target centre − template centre, 1/256 px
-    int32_t roi_x_ = 0, roi_y_ = 0;
-    uint8_t roi_w_ = 0, roi_h_ = 0;
+    int32_t roi_x_ = 0, roi_y_ = 0;              // set_target()'s box, px
+    uint16_t roi_w_ = 0, roi_h_ = 0;
+    uint16_t roi_step_ = 1;     // its step, from the frame it starts on
+    uint16_t step_ = 1;         // the track's step: frame px per block of the captured region
+    uint16_t ox_ = 0, oy_ = 0;  // this frame's block grid origin, px in [0, step_)
+    float expected_x_ = 0, expected_y_ = 0;  // the target centre the grid was placed for, px
 };
 
 // QVGA: 320-pixel rows, 96 corners, 9×9 patches, templates up to 16×16, a captured region of
