@@ -40,6 +40,7 @@ std::vector<TargetRunFrame> run_target_sequence(const scene::GroundSequence& seq
         pipeline->begin_frame(static_cast<uint16_t>(w), static_cast<uint16_t>(h), config);
         for (int y = 0; y < h; ++y) pipeline->push_row(image.row(y), static_cast<uint16_t>(w));
         pipeline->finish(f.result);
+        f.accumulated = pipeline->tracker().accumulated();
         f.error_px = std::hypot(f.result.estimate.x - f.truth.target_x,
                                 f.result.estimate.y - f.truth.target_y);
         run.push_back(f);

@@ -13,7 +13,8 @@ namespace qt::cli {
 struct TargetRunFrame {
     TargetFrame result;
     scene::GroundTruth truth;
-    double error_px = 0;  // |estimate − truth|, px
+    double error_px = 0;     // |estimate − truth|, px
+    Homography accumulated;  // the tracker's A after the frame: reference image → this one
 };
 
 // The box of frame 0 the tracker starts from: side × side px (odd) centred on the pixel nearest
