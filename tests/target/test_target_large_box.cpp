@@ -86,3 +86,39 @@ TEST_CASE("set_target: boxes up to MaxTemplate blocks of up to 16 px a side", "[
         CHECK(p.set_target(x, 3, 5, largest + 1) == qt::Status::bad_size);
     }
 }
+
+TEST_CASE(
+    "target pipeline: a 40 x 40 px bright square tracked by the morphological detector in "
+    "blocks of 3 px",
+    "[target][large]") {
+    static qt::TargetPipelineQvga pipeline;
+    qt::TargetPipelineParams params = qt::cli::qvga_target_config(qt::TargetMethod::fused);
+    params.detector = qt::TargetDetector::morphological;
+    const int side = 40, x0 = 80, y0 = 90, vx = 2, vy = 1;  // blocks of 3 px: 14 x 14
+    REQUIRE(pipeline.set_target(x0, y0, side, side) == qt::Status::ok);
+    double worst = 0;
+    for (int k = 0; k < 20; ++k) {
+        const int tx = x0 + vx * k, ty = y0 + vy * k;
+        qt::io::GreyImage img(kW, kH, 0);
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) {
+                const bool in = x >= tx && x < tx + side && y >= ty && y < ty + side;
+                img.at(x, y) = static_cast<uint8_t>(
+                    in ? 220 : std::lround(std::min(120.0, std::max(0.0, background(x, y) - 40))));
+            }
+        REQUIRE(pipeline.begin_frame(kW, kH, params) == qt::Status::ok);
+        for (int y = 0; y < kH; ++y) REQUIRE(pipeline.push_row(img.row(y), kW) == qt::Status::ok);
+        qt::TargetFrame out;
+        const qt::Status s = pipeline.finish(out);
+        REQUIRE((s == qt::Status::ok || s == qt::Status::capacity_exceeded));
+        const double cx = tx + 0.5 * (side - 1), cy = ty + 0.5 * (side - 1);
+        const double e = std::hypot(out.estimate.x - cx, out.estimate.y - cy);
+        INFO("frame " << k << ": estimate (" << out.estimate.x << ", " << out.estimate.y
+                      << "), truth (" << cx << ", " << cy << "), state "
+                      << qt::target_state_name(out.estimate.state));
+        if (k > 0) CHECK(out.estimate.state == qt::TargetState::measured);
+        CHECK(e < 3.0);  // a block: the cluster's centroid on block means (2.28 px measured)
+        worst = std::max(worst, e);
+    }
+    WARN("40 x 40 px bright square, morphological detector: worst error " << worst << " px");
+}

@@ -280,8 +280,8 @@ public:
                 out.hit.score_q15 = d.found ? 32767 : 0;
                 out.hit.positions = d.clusters;
                 m.found = d.found;
-                m.x = static_cast<float>(d.x_q8) * (1.0f / 256.0f);
-                m.y = static_cast<float>(d.y_q8) * (1.0f / 256.0f);
+                m.x = static_cast<float>(out.hit.x_q8) * (1.0f / 256.0f);
+                m.y = static_cast<float>(out.hit.y_q8) * (1.0f / 256.0f);
                 m.score = d.found ? 1.0f : 0.0f;
             } else if (out.window.radius > 0) {
                 out.hit = search_template(template_, capture_.region(), wx, wy, wr);
