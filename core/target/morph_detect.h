@@ -19,6 +19,7 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/floor_div.h"
 #include "target/template_search.h"  // PixelRegion
 
 namespace qt {
@@ -168,10 +169,6 @@ private:
         uint16_t area = 0;
         int32_t sw = 0, sx = 0, sy = 0;  // Σ top-hat, Σ top-hat·x, Σ top-hat·y (window px)
     };
-
-    static int64_t floor_div(int64_t a, int64_t b) {  // b > 0
-        return a >= 0 ? a / b : -((-a + b - 1) / b);
-    }
 
     uint16_t find(uint16_t i) {
         while (runs_[i].parent != i) {

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "base/floor_div.h"
 #include "cli/board_runner.h"
 #include "cli/frame_loop.h"
 #include "cli/target_json.h"
@@ -25,13 +26,6 @@ std::string target_usage() {
            target_options_help(GeometryCommand::target);
 }
 
-namespace {
-
-// ⌊a / n⌋ for n > 0 and any a.
-int floor_div(int a, int n) { return a >= 0 ? a / n : -((-a + n - 1) / n); }
-
-}  // namespace
-
 int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* err) {
     TargetOptions options;
     std::vector<std::string> positional;
@@ -53,9 +47,12 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
                 return 1;
             }
             // The box in the binned frame: every binned pixel it touches.
-            const int x0 = floor_div(options.roi_x, bin), y0 = floor_div(options.roi_y, bin);
-            const int w = floor_div(options.roi_x + options.roi_w - 1, bin) - x0 + 1;
-            const int h = floor_div(options.roi_y + options.roi_h - 1, bin) - y0 + 1;
+            const int x0 = static_cast<int>(floor_div(options.roi_x, bin)),
+                      y0 = static_cast<int>(floor_div(options.roi_y, bin));
+            const int w =
+                static_cast<int>(floor_div(options.roi_x + options.roi_w - 1, bin)) - x0 + 1;
+            const int h =
+                static_cast<int>(floor_div(options.roi_y + options.roi_h - 1, bin)) - y0 + 1;
             if (w > kMaxRoiSide || h > kMaxRoiSide ||
                 pipeline->set_target(x0, y0, static_cast<uint16_t>(w), static_cast<uint16_t>(h)) !=
                     Status::ok) {

@@ -15,6 +15,7 @@
 #include <type_traits>
 
 #include "base/capacity.h"
+#include "base/floor_div.h"
 #include "base/status.h"
 #include "gradient/gradient_stage.h"
 #include "target/float/frame_homography.h"
@@ -148,8 +149,8 @@ public:
             // The box's blocks and a margin around them (the morphological detector's opening
             // needs the target's surroundings).
             step_ = roi_step_;
-            ox_ = static_cast<uint16_t>(roi_x_ - floor_div(roi_x_, step_) * step_);
-            oy_ = static_cast<uint16_t>(roi_y_ - floor_div(roi_y_, step_) * step_);
+            ox_ = static_cast<uint16_t>(floor_mod(roi_x_, step_));
+            oy_ = static_cast<uint16_t>(floor_mod(roi_y_, step_));
             constexpr int64_t m = MaxTemplate / 2 + 2;
             capture_.begin(box_block(roi_x_, ox_) - m, box_block(roi_y_, oy_) - m,
                            box_blocks(roi_w_) + 2 * m, box_blocks(roi_h_) + 2 * m, width, height,
@@ -341,8 +342,8 @@ private:
         const int32_t bx_q8 = static_cast<int32_t>(from_frame_q8(x_q8, ox_)),
                       by_q8 = static_cast<int32_t>(from_frame_q8(y_q8, oy_));
         // Top-left so that the template centre tl + (w − 1)/2 is nearest the target centre.
-        const int32_t left = floor_div256(bx_q8 - (w - 1) * 128 + 128);
-        const int32_t top = floor_div256(by_q8 - (h - 1) * 128 + 128);
+        const int32_t left = static_cast<int32_t>(floor_div(bx_q8 - (w - 1) * 128 + 128, 256));
+        const int32_t top = static_cast<int32_t>(floor_div(by_q8 - (h - 1) * 128 + 128, 256));
         if (!cut_template(capture_.region(), left, top, template_.w, template_.h, template_))
             return;
         offset_x_q8_ =
@@ -363,8 +364,6 @@ private:
     int64_t box_blocks(int64_t n) const { return (n + step_ - 1) / step_; }
     // The block of the grid from origin o whose first pixel is frame pixel a.
     int64_t box_block(int64_t a, int64_t o) const { return floor_div(a - o, step_); }
-    // ⌊a / n⌋ for n >= 1 and any a.
-    static int64_t floor_div(int64_t a, int64_t n) { return a >= 0 ? a / n : -((n - 1 - a) / n); }
     // The grid origin, [0, step), that puts a block edge at the template's expected top-left:
     // the target's expected centre (px) less its offset from the template's centre (1/256 px)
     // less half the template (`blocks` a side). 0 at step 1.
@@ -374,7 +373,7 @@ private:
         const float left = centre - static_cast<float>(offset_q8) * (1.0f / 256.0f) -
                            0.5f * s * static_cast<float>(blocks - 1) - 0.5f * (s - 1.0f);
         const int64_t a = clamped_px(left < 0 ? left - 0.5f : left + 0.5f);
-        return static_cast<uint16_t>(a - floor_div(a, step_) * step_);
+        return static_cast<uint16_t>(floor_mod(a, step_));
     }
     // A block coordinate (1/256 block) as frame px (1/256 px): block X's centre is frame pixel
     // o + s·X + (s − 1)/2. The identity at step 1.
@@ -421,7 +420,6 @@ private:
         morph_.min_area = static_cast<uint16_t>(area / 4 > 1 ? area / 4 : 1);
         morph_.max_area = static_cast<uint16_t>(area > 16383 ? 65535 : area * 4);
     }
-    static int32_t floor_div256(int32_t v) { return v >= 0 ? v / 256 : -((255 - v) / 256); }
     // This frame's corners become the next frame's previous ones (a copy: the detector's set
     // is overwritten by the next frame, and one copy costs less RAM than a second detector set).
     void keep_features(const Features& cur) {
