@@ -31,6 +31,12 @@ struct Qvga {
     static constexpr uint16_t morph_region = 84;
 };
 
+// QVGA without the morphological detector: firmware that measures with the NCC template (the
+// default) and has no RAM for a detector it never uses (the Cortex-M4F target image).
+struct QvgaTemplateOnly : Qvga {
+    static constexpr uint16_t morph_region = 0;
+};
+
 struct Vga : Qvga {
     static constexpr uint16_t max_width = 640, max_height = 480;
     static constexpr uint16_t edge_points = 8192;

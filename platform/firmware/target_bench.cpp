@@ -1,5 +1,5 @@
 // The target tracker of the filtering-geometry paper on the Cortex-M4F (hard float): the whole
-// qt::TargetPipeline<QvgaTemplateOnly> (default parameters) on the frames of target_frames.h,
+// qt::TargetPipeline<qt::QvgaTemplateOnly> (default parameters) on the frames of target_frames.h,
 // written at build time by target_expected (target_expected_main.cpp) and linked into the
 // FRAMES region, outside the flash budget. Each frame is fed row by row, as a camera delivers
 // it, with no frame buffer: a row is copied (untimed, as a camera's DMA would) into a
@@ -49,12 +49,6 @@ extern "C" uint8_t __data_start[], __bss_end[];
 
 namespace {
 
-// QVGA capacity without the morphological detector: the firmware measures with the NCC
-// template (the default), and the paper's detector would cost 12 kB of RAM it never uses.
-struct QvgaTemplateOnly : qt::Qvga {
-    static constexpr uint16_t morph_region = 0;
-};
-
 constexpr uint16_t kWidth = 320, kHeight = 240;  // QvgaTemplateOnly's capacity
 constexpr unsigned kFrameCount = sizeof kTargetFrames / sizeof kTargetFrames[0];
 
@@ -62,8 +56,8 @@ constexpr unsigned kFrameCount = sizeof kTargetFrames / sizeof kTargetFrames[0];
 constexpr uint64_t kAimInstructions = 4000000;
 constexpr uint32_t kAimRamBytes = 64 * 1024, kAimFlashBytes = 128 * 1024;
 
-qt::TargetPipeline<QvgaTemplateOnly> g_pipeline;  // ~53 KiB, in .bss
-alignas(4) uint8_t g_line[kWidth];                // the camera's line buffer
+qt::TargetPipeline<qt::QvgaTemplateOnly> g_pipeline;  // ~53 KiB, in .bss
+alignas(4) uint8_t g_line[kWidth];                    // the camera's line buffer
 
 enum Stage : unsigned { kRows, kHarris, kNcc, kHomography, kSearch, kFilter, kStages };
 constexpr const char* kStageNames[kStages] = {"rows",       "harris", "ncc",

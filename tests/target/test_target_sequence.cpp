@@ -96,11 +96,6 @@ TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-
 
 namespace {
 
-// QVGA without the morphological detector, as the Cortex-M4F firmware builds it.
-struct QvgaTemplateOnly : qt::Qvga {
-    static constexpr uint16_t morph_region = 0;
-};
-
 template <class Pipeline>
 qt::Status run_frame(Pipeline& p, const qt::io::GreyImage& image,
                      const qt::TargetPipelineParams& params, qt::TargetFrame& out) {
@@ -118,7 +113,7 @@ TEST_CASE(
     "12 kB less RAM, the detector refused",
     "[target][capacity]") {
     static qt::TargetPipelineQvga full;
-    static qt::TargetPipeline<QvgaTemplateOnly> slim;
+    static qt::TargetPipeline<qt::QvgaTemplateOnly> slim;
     STATIC_REQUIRE(sizeof slim + 12000 <= sizeof full);  // the detector: 84 x 84 B and its runs
 
     const qt::scene::GroundSequenceConfig cfg = qt::scene::short_ground_sequence();
