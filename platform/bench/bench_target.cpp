@@ -13,6 +13,7 @@
 
 #include "demo/target_runner.h"
 #include "io/svg_plot.h"
+#include "scene/homography3.h"
 
 namespace {
 
@@ -106,63 +107,31 @@ Summary summarise(const std::vector<TargetRunFrame>& run) {
 // what A should be. homography = |A·x̂ − A_true·x̂|: the accumulated homography's error, carried
 // far outside the image; filter = |A_true·x̂ − truth|: where the filter's own prediction of the
 // target's motion (its velocity, extrapolated in image m) leaves it. They add up to at least
-// the error (triangle inequality). Zero split when there is no such frame or A is singular.
+// the error (triangle inequality). Zero split when no frame is out of view.
 struct ErrorSplit {
     double homography = 0, filter = 0;
 };
 
-void apply(const double h[9], double x, double y, double& ox, double& oy) {
-    const double w = h[6] * x + h[7] * y + h[8];
-    ox = (h[0] * x + h[1] * y + h[2]) / w;
-    oy = (h[3] * x + h[4] * y + h[5]) / w;
-}
-
-bool invert(const double a[9], double out[9]) {
-    const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-                       a[2] * (a[3] * a[7] - a[4] * a[6]);
-    if (std::fabs(det) < 1e-12) return false;
-    out[0] = (a[4] * a[8] - a[5] * a[7]) / det;
-    out[1] = (a[2] * a[7] - a[1] * a[8]) / det;
-    out[2] = (a[1] * a[5] - a[2] * a[4]) / det;
-    out[3] = (a[5] * a[6] - a[3] * a[8]) / det;
-    out[4] = (a[0] * a[8] - a[2] * a[6]) / det;
-    out[5] = (a[2] * a[3] - a[0] * a[5]) / det;
-    out[6] = (a[3] * a[7] - a[4] * a[6]) / det;
-    out[7] = (a[1] * a[6] - a[0] * a[7]) / det;
-    out[8] = (a[0] * a[4] - a[1] * a[3]) / det;
-    return true;
-}
-
 ErrorSplit split_end_error(const std::vector<TargetRunFrame>& run) {
     ErrorSplit split;
-    double truth_a[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // A_true since the last reset
     int last_out = -1;
     for (size_t k = 0; k < run.size(); ++k)
         if (!run[k].truth.in_view) last_out = static_cast<int>(k);
-    for (int k = 0; k <= last_out; ++k) {
-        const TargetRunFrame& f = run[static_cast<size_t>(k)];
-        if (k == 0 || f.result.estimate.reset) {
-            for (int i = 0; i < 9; ++i) truth_a[i] = i % 4 == 0 ? 1 : 0;
-        } else {
-            double product[9];
-            for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c) {
-                    product[r * 3 + c] = 0;
-                    for (int i = 0; i < 3; ++i)
-                        product[r * 3 + c] +=
-                            f.truth.h_from_previous[r * 3 + i] * truth_a[i * 3 + c];
-                }
-            std::memcpy(truth_a, product, sizeof truth_a);
-        }
-    }
     if (last_out < 0) return split;
+    double truth_a[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // A_true since the last reset
+    for (int k = 1; k <= last_out; ++k) {
+        const TargetRunFrame& f = run[static_cast<size_t>(k)];
+        double product[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        if (!f.result.estimate.reset)
+            qt::scene::multiply(f.truth.h_from_previous, truth_a, product);
+        std::memcpy(truth_a, product, sizeof truth_a);
+    }
     const TargetRunFrame& f = run[static_cast<size_t>(last_out)];
-    double a[9], a_inv[9];
+    double a[9], a_inv[9], mx, my, tx, ty;
     for (int i = 0; i < 9; ++i) a[i] = f.accumulated.m[i];
-    if (!invert(a, a_inv)) return split;
-    double mx, my, tx, ty;
-    apply(a_inv, f.result.estimate.x, f.result.estimate.y, mx, my);  // x̂ in image m
-    apply(truth_a, mx, my, tx, ty);
+    qt::scene::invert(a, a_inv);
+    qt::scene::apply(a_inv, f.result.estimate.x, f.result.estimate.y, mx, my);  // x̂ in image m
+    qt::scene::apply(truth_a, mx, my, tx, ty);
     split.homography = std::hypot(f.result.estimate.x - tx, f.result.estimate.y - ty);
     split.filter = std::hypot(tx - f.truth.target_x, ty - f.truth.target_y);
     return split;

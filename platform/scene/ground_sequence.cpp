@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "scene/det_math.h"
+#include "scene/homography3.h"
 #include "scene/random.h"
 
 namespace qt::scene {
@@ -218,32 +219,6 @@ double sine(double x) {
     double s = 0, c = 0;
     det_sincos(x, s, c);
     return s;
-}
-
-// ---- 3×3 homographies ---------------------------------------------------------------------
-
-void apply(const double h[9], double x, double y, double& u, double& v) {
-    const double w = h[6] * x + h[7] * y + h[8];
-    u = (h[0] * x + h[1] * y + h[2]) / w;
-    v = (h[3] * x + h[4] * y + h[5]) / w;
-}
-
-void invert(const double m[9], double r[9]) {  // adjugate; the scale does not matter
-    r[0] = m[4] * m[8] - m[5] * m[7];
-    r[1] = m[2] * m[7] - m[1] * m[8];
-    r[2] = m[1] * m[5] - m[2] * m[4];
-    r[3] = m[5] * m[6] - m[3] * m[8];
-    r[4] = m[0] * m[8] - m[2] * m[6];
-    r[5] = m[2] * m[3] - m[0] * m[5];
-    r[6] = m[3] * m[7] - m[4] * m[6];
-    r[7] = m[1] * m[6] - m[0] * m[7];
-    r[8] = m[0] * m[4] - m[1] * m[3];
-}
-
-void multiply(const double a[9], const double b[9], double r[9]) {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            r[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
 }
 
 }  // namespace
