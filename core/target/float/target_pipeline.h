@@ -368,7 +368,6 @@ private:
     // the target's expected centre (px) less its offset from the template's centre (1/256 px)
     // less half the template (`blocks` a side). 0 at step 1.
     uint16_t grid_origin(float centre, int32_t offset_q8, int32_t blocks) const {
-        if (step_ == 1) return 0;
         const float s = static_cast<float>(step_);
         const float left = centre - static_cast<float>(offset_q8) * (1.0f / 256.0f) -
                            0.5f * s * static_cast<float>(blocks - 1) - 0.5f * (s - 1.0f);
@@ -384,9 +383,8 @@ private:
     int64_t from_frame_q8(int64_t f_q8, uint16_t o) const {
         return floor_div(f_q8 - (step_ - 1) * 128 - int64_t{o} * 256, step_);
     }
-    // A window centre, px, as the nearest block (round_px at step 1).
+    // A window centre, px, as the nearest block (round_px(v) itself at step 1).
     int32_t to_blocks(float v, uint16_t o) const {
-        if (step_ == 1) return round_px(v);
         const float s = static_cast<float>(step_);
         return round_px((v - static_cast<float>(o) - 0.5f * (s - 1.0f)) / s);
     }
