@@ -42,16 +42,18 @@ angle_t atan2_angle(int32_t y, int32_t x) {
     }
     // Normalise max(|X|, |Y|) into [2^28, 2^29): enough bits for precision, and the CORDIC
     // growth (×1.647, ×√2 at most) keeps every iterate below 2^31.
-    int64_t m = X > abs64(Y) ? X : abs64(Y);
-    while (m >= pow2(29)) {
-        X /= 2;
-        Y /= 2;
-        m /= 2;
-    }
-    while (m < pow2(28)) {
-        X *= 2;
-        Y *= 2;
-        m *= 2;
+    // k halvings (each truncating toward zero, as one division by 2^k does) or doublings, the
+    // count from the top bit of m (one CLZ).
+    const uint64_t m = static_cast<uint64_t>(X > abs64(Y) ? X : abs64(Y));
+    const int top = 63 - __builtin_clzll(m);  // m >= 1: both are nonzero here
+    if (top >= 29) {
+        const int k = top - 28;
+        X >>= k;  // X > 0
+        Y = Y < 0 ? -((-Y) >> k) : Y >> k;
+    } else if (top < 28) {
+        const int k = 28 - top;
+        X *= pow2(k);
+        Y *= pow2(k);
     }
     int32_t xi = static_cast<int32_t>(X), yi = static_cast<int32_t>(Y);
     for (int i = 0; i < kIterations; ++i) {

@@ -39,14 +39,10 @@ constexpr uint32_t state(edge_point p) { return (p >> 26) & 3u; }
 constexpr int32_t delta16(edge_point p) { return static_cast<int32_t>(((p >> 28) ^ 8u)) - 8; }
 // Step of the gradient axis of direction bin d in 1/2 pixel: (2,0) for 0°, (2,1) for 22.5°
 // (the odd axes interpolate between two neighbours), (2,2) for 45°, ...; negated for d >= 8.
-constexpr int32_t axis_x2(uint32_t d) {
-    constexpr int8_t kX[8] = {2, 2, 2, 1, 0, -1, -2, -2};
-    return d < 8 ? kX[d] : -kX[d - 8];
-}
-constexpr int32_t axis_y2(uint32_t d) {
-    constexpr int8_t kY[8] = {0, 1, 2, 2, 2, 2, 2, 1};
-    return d < 8 ? kY[d] : -kY[d - 8];
-}
+constexpr int8_t kAxisX2[16] = {2, 2, 2, 1, 0, -1, -2, -2, -2, -2, -2, -1, 0, 1, 2, 2};
+constexpr int8_t kAxisY2[16] = {0, 1, 2, 2, 2, 2, 2, 1, 0, -1, -2, -2, -2, -2, -2, -1};
+constexpr int32_t axis_x2(uint32_t d) { return kAxisX2[d & 15u]; }
+constexpr int32_t axis_y2(uint32_t d) { return kAxisY2[d & 15u]; }
 // Sub-pixel position in 1/32 pixel: 32·(x, y) + delta16 · axis step (1/16 · 1/2).
 constexpr int32_t x32(edge_point p) {
     return static_cast<int32_t>(x(p)) * 32 + delta16(p) * axis_x2(dir(p));
@@ -63,10 +59,13 @@ constexpr edge_point with_state(edge_point p, uint32_t s) {
 // whatever the capacities. Fill it with begin_frame / begin_row / push, in raster order.
 class EdgeList {
 public:
-    EdgeList(edge_point* points, uint8_t* strength, uint16_t capacity, uint16_t* row_start,
+    // strength: (capacity + 1) / 2 words, the points' magnitudes a byte each while the list
+    // fills, then PPHT's working list (spare_words()).
+    EdgeList(edge_point* points, uint16_t* strength, uint16_t capacity, uint16_t* row_start,
              uint16_t max_rows)
         : points_(points),
-          strength_(strength),
+          strength_(reinterpret_cast<uint8_t*>(strength)),  // bytes of any object: defined
+          spare_(strength),
           row_start_(row_start),
           capacity_(capacity),
           max_rows_(max_rows) {}
@@ -88,6 +87,10 @@ public:
     // Lowest magnitude kept this frame, grey levels (even; 0 until the list first filled):
     // every edge at or above it is in the list. An edge stage may skip weaker pixels.
     uint16_t floor() const { return floor_; }
+    // The points' magnitudes matter only while the list fills and for hysteresis(): once the
+    // frame is closed and filtered, their bytes are free, and PPHT keeps its working list there
+    // (overwriting them): capacity() / 2 words.
+    uint16_t* spare_words() { return spare_; }
     uint16_t height() const { return height_; }
     edge_point& operator[](uint16_t i) { return points_[i]; }
     edge_point operator[](uint16_t i) const { return points_[i]; }
@@ -144,6 +147,7 @@ private:
 
     edge_point* points_;
     uint8_t* strength_;    // magnitude / 2 (0..255) of each point
+    uint16_t* spare_;      // the same storage as words
     uint16_t* row_start_;  // row_start_[y] .. row_start_[y + 1] - 1 are row y's points
     uint16_t capacity_;
     uint16_t max_rows_;
@@ -156,13 +160,13 @@ private:
 };
 
 // Storage for an edge list of Capacity points over frames of up to MaxRows rows:
-// 5·Capacity + 2·(MaxRows + 1) bytes.
+// 5·Capacity (+ 1 when odd) + 2·(MaxRows + 1) bytes.
 template <uint16_t Capacity, uint16_t MaxRows>
 struct EdgeListStorage {
     static_assert(Capacity >= 4 && MaxRows >= 1, "room to drop a quarter");
     static_assert(MaxRows <= ep::kMaxCoordinate + 1, "rows fit the packed y");
     edge_point points[Capacity] = {};
-    uint8_t strength[Capacity] = {};
+    uint16_t strength[(Capacity + 1u) / 2u] = {};  // a byte a point (EdgeList's constructor)
     uint16_t row_start[MaxRows + 1] = {};
     EdgeList view() { return EdgeList(points, strength, Capacity, row_start, MaxRows); }
 };

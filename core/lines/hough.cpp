@@ -2,6 +2,10 @@
 
 #include <string.h>
 
+#if defined(__ARM_FEATURE_SIMD32)
+#include <arm_acle.h>
+#endif
+
 #include "lines/line_fit.h"
 #include "lines/visit_order.h"
 
@@ -13,52 +17,118 @@ int rho_shift_of(uint16_t rho_step) {
     return rho_step == 1 ? 0 : rho_step == 2 ? 1 : rho_step == 4 ? 2 : -1;
 }
 
-// One run of consecutive θ indices [t_first, t_last] of a point's votes. Kept out of line, with
-// everything in arguments: inside the large PPHT loop the compiler keeps its values on the
-// stack, and a store through the uint8_t bins may alias any of them (reloaded every vote).
+// The voting arithmetic, one instruction each where the Cortex-M4's SIMD extension has it, the
+// same values in plain C elsewhere (bit for bit: the tests compare the two).
+#if defined(__ARM_FEATURE_SIMD32)
+// x·cos θ + y·sin θ for a point packed as x in the low 16 bits and y in the high (signed) and
+// a cos_sin_q14 entry (|x|, |y| <= 1024 and |cos|, |sin| <= 2^14: no overflow).
+inline int32_t dot_q14(uint32_t xy, uint32_t cs) {
+    return __smuad(static_cast<int16x2_t>(xy), static_cast<int16x2_t>(cs));
+}
+inline uint32_t saturating_inc(uint32_t bin) { return __uqadd8(bin, 1u); }  // bin <= 255
+inline uint32_t saturating_dec(uint32_t bin) { return __uqsub8(bin, 1u); }
+inline uint32_t excess(uint32_t v, uint32_t floor) {
+    return __uqsub8(v, floor);
+}  // v, floor <= 255
+// acc + (raised − bin), raised >= bin
+inline uint32_t add_increase(uint32_t raised, uint32_t bin, uint32_t acc) {
+    return __usada8(raised, bin, acc);
+}
+#else
+inline int32_t dot_q14(uint32_t xy, uint32_t cs) {
+    return static_cast<int16_t>(xy & 0xFFFFu) * static_cast<int16_t>(cs & 0xFFFFu) +
+           static_cast<int16_t>(xy >> 16) * static_cast<int16_t>(cs >> 16);
+}
+inline uint32_t saturating_inc(uint32_t bin) { return bin + (bin < 255u); }
+inline uint32_t saturating_dec(uint32_t bin) { return bin - (bin > 0u); }
+inline uint32_t excess(uint32_t v, uint32_t floor) { return v > floor ? v - floor : 0u; }
+inline uint32_t add_increase(uint32_t raised, uint32_t bin, uint32_t acc) {
+    return acc + raised - bin;
+}
+#endif
+
+inline int32_t cos_of(uint32_t cs) { return static_cast<int16_t>(cs & 0xFFFFu); }
+inline int32_t sin_of(uint32_t cs) { return static_cast<int16_t>(cs >> 16); }
+
+// The arithmetic of a point's votes. The loops over them are kept out of line with a copy of
+// it in locals: inside the large PPHT loop the compiler keeps its values on the stack, and a
+// store through the uint8_t bins may alias any of them (reloaded every vote).
 struct VoteRun {
     uint8_t* bins;
-    const int16_t* cos_q14;
-    const int16_t* sin_q14;
+    const uint32_t* cos_sin_q14;
     uint32_t n_rho;
-    int32_t x, y;   // the point, pixels from the frame centre
+    uint32_t xy;    // the point, pixels from the frame centre: x low 16 bits, y high, signed
     int32_t bias;   // rounding plus the rho offset, in rho units << shift
     int32_t shift;  // 14 + log2(rho_step): rho = (x·cos + y·sin + bias) >> shift
+    uint32_t below_threshold;  // the vote threshold − 1
 };
 
-uint32_t rho_index(const VoteRun& r, int32_t t) {
-    const int32_t v = r.x * r.cos_q14[t] + r.y * r.sin_q14[t];  // rho, 1.0 = 2^14
-    return static_cast<uint32_t>(t) * r.n_rho + static_cast<uint32_t>((v + r.bias) >> r.shift);
+// The bins of θ index t start at t·n_rho.
+inline uint32_t bin_index(const VoteRun& r, const uint32_t* cs, uint32_t row) {
+    return row + static_cast<uint32_t>((dot_q14(r.xy, *cs) + r.bias) >> r.shift);
 }
 
-// +1 on each bin (saturating at 255, counted in *saturated); returns the highest count, from
-// `best` up, with its bin in *best_index.
-__attribute__((noinline)) uint32_t cast_run(const VoteRun r, int32_t t_first, int32_t t_last,
-                                            uint32_t best, uint32_t* best_index,
-                                            uint32_t* saturated) {
-    uint32_t lost = 0, index_of_best = *best_index;
-    for (int32_t t = t_first; t <= t_last; ++t) {
-        const uint32_t index = rho_index(r, t);
-        const uint32_t bin = r.bins[index];
-        lost += bin == 255;
-        const uint32_t raised = bin + (bin < 255);
-        r.bins[index] = static_cast<uint8_t>(raised);
-        if (raised > best) {
-            best = raised;
-            index_of_best = index;
+// A point's votes: the θ indices within the window about its gradient direction, as up to two
+// runs [first, last] that do not wrap past 0° or 180° (the second empty, {1, 0}, unless the
+// window wraps), and the runs' arithmetic.
+struct Votes {
+    int32_t runs[2][2];
+    VoteRun run;
+};
+
+// +1 on each bin (saturating at 255: the votes lost are added to *saturated); returns whether
+// a bin reached the threshold. Out of line, both runs in one call.
+__attribute__((noinline)) bool cast_votes(const Votes& v, uint32_t* saturated) {
+    const VoteRun r = v.run;
+    uint32_t gained = 0, reached = 0, cast = 0;
+    for (int32_t k = 0; k < 2; ++k) {
+        const uint32_t* cs = r.cos_sin_q14 + v.runs[k][0];
+        const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
+        for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
+             ++cs, row += r.n_rho) {
+            const uint32_t index = bin_index(r, cs, row);
+            const uint32_t bin = r.bins[index];
+            const uint32_t raised = saturating_inc(bin);
+            r.bins[index] = static_cast<uint8_t>(raised);
+            gained = add_increase(raised, bin, gained);
+            reached |= excess(raised, r.below_threshold);
+            ++cast;
         }
     }
-    *best_index = index_of_best;
-    *saturated += lost;
+    *saturated += cast - gained;
+    return reached != 0;
+}
+
+// The highest bin of the votes and its first index in *best_index (only read).
+uint32_t best_of_votes(const Votes& v, uint32_t* best_index) {
+    const VoteRun& r = v.run;
+    uint32_t best = 0;
+    for (int32_t k = 0; k < 2; ++k) {
+        const uint32_t* cs = r.cos_sin_q14 + v.runs[k][0];
+        const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
+        for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
+             ++cs, row += r.n_rho) {
+            const uint32_t index = bin_index(r, cs, row);
+            if (r.bins[index] > best) {
+                best = r.bins[index];
+                *best_index = index;
+            }
+        }
+    }
     return best;
 }
 
 // −1 on each bin (not below 0).
-__attribute__((noinline)) void withdraw_run(const VoteRun r, int32_t t_first, int32_t t_last) {
-    for (int32_t t = t_first; t <= t_last; ++t) {
-        const uint32_t index = rho_index(r, t);
-        const uint32_t bin = r.bins[index];
-        r.bins[index] = static_cast<uint8_t>(bin - (bin > 0));
+__attribute__((noinline)) void withdraw_votes(const Votes& v) {
+    const VoteRun r = v.run;
+    for (int32_t k = 0; k < 2; ++k) {
+        const uint32_t* cs = r.cos_sin_q14 + v.runs[k][0];
+        const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
+        for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
+             ++cs, row += r.n_rho) {
+            const uint32_t index = bin_index(r, cs, row);
+            r.bins[index] = static_cast<uint8_t>(saturating_dec(r.bins[index]));
+        }
     }
 }
 
@@ -76,7 +146,9 @@ public:
           cy_(height / 2),
           rho_shift_(rho_shift_of(p.rho_step)),
           rho_half_(static_cast<int32_t>(hough_rho_half_bins(width, height, p.rho_step))),
-          n_rho_(static_cast<uint32_t>(2 * rho_half_ + 1)) {
+          n_rho_(static_cast<uint32_t>(2 * rho_half_ + 1)),
+          held_(edges.spare_words()),
+          held_capacity_(edges.capacity() / 2u) {
         const uint32_t n = p.theta_bins;
         window_ = p.vote_window_deg >= 90
                       ? -1
@@ -87,8 +159,10 @@ public:
                 // θ_t = t·180°/n as a binary angle: t·2^31/n.
                 const SinCos sc =
                     sin_cos(static_cast<angle_t>((static_cast<uint64_t>(t) << 31) / n));
-                ws.cos_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.cos.raw, 16));
-                ws.sin_q14[t] = static_cast<int16_t>(shr_round_half_away(sc.sin.raw, 16));
+                const int32_t c = static_cast<int32_t>(shr_round_half_away(sc.cos.raw, 16));
+                const int32_t s = static_cast<int32_t>(shr_round_half_away(sc.sin.raw, 16));
+                ws.cos_sin_q14[t] =
+                    (static_cast<uint32_t>(c) & 0xFFFFu) | (static_cast<uint32_t>(s) << 16);
             }
             *ws.table_bins = static_cast<uint16_t>(n);
         }
@@ -97,16 +171,15 @@ public:
 
     void run(Segment* out, uint16_t capacity, uint16_t* count) {
         *count = 0;
-        const VisitOrder order(edges_.size(), p_.seed);
+        VisitOrder order(edges_.size(), p_.seed);
         for (uint32_t k = 0; k < edges_.size() && !stats_.budget_exhausted; ++k) {
-            const uint16_t i = static_cast<uint16_t>(order.at(k));
+            const uint16_t i = static_cast<uint16_t>(order.next());
             const edge_point pt = edges_[i];
             if (ep::state(pt) != ep::kFresh) continue;
             edges_[i] = ep::with_state(pt, ep::kVoted);
             ++stats_.points_visited;
             uint32_t best_bin = 0;
-            const uint32_t best = vote(pt, +1, &best_bin);
-            if (best < p_.threshold) continue;
+            if (cast(pt, &best_bin) == 0) continue;
             ++stats_.lines_followed;
             Segment s;
             if (!follow(i, best_bin / n_rho_, s)) {
@@ -142,9 +215,7 @@ private:
         if (length2(s) > length2(out[shortest])) out[shortest] = s;
     }
 
-    // Casts (+1) or withdraws (-1) the point's votes; returns the highest count among its bins
-    // and that bin's index (θ index · rho bins + rho index).
-    uint32_t vote(edge_point pt, int delta, uint32_t* best_bin) {
+    Votes votes_of(edge_point pt) const {
         const int32_t n = p_.theta_bins;
         const int32_t x = static_cast<int32_t>(ep::x(pt)) - cx_,
                       y = static_cast<int32_t>(ep::y(pt)) - cy_;
@@ -155,34 +226,46 @@ private:
             first = centre - window_;
             last = centre + window_;
         }
-        // The window may wrap past 0° or 180°: at most two runs of consecutive θ indices.
-        uint32_t best = 0;
-        int32_t runs[2][2] = {{first, last}, {1, 0}};  // the second run empty unless it wraps
+        Votes v;
+        v.runs[0][0] = first;
+        v.runs[0][1] = last;
+        v.runs[1][0] = 1;  // the second run empty unless the window wraps
+        v.runs[1][1] = 0;
         if (first < 0) {
-            runs[0][0] = first + n;
-            runs[0][1] = n - 1;
-            runs[1][0] = 0;
-            runs[1][1] = last;
+            v.runs[0][0] = first + n;
+            v.runs[0][1] = n - 1;
+            v.runs[1][0] = 0;
+            v.runs[1][1] = last;
         } else if (last >= n) {
-            runs[0][1] = n - 1;
-            runs[1][0] = 0;
-            runs[1][1] = last - n;
+            v.runs[0][1] = n - 1;
+            v.runs[1][0] = 0;
+            v.runs[1][1] = last - n;
         }
         const int32_t shift = 14 + rho_shift_;
         const int32_t bias = (1 << (13 + rho_shift_)) + (rho_half_ << shift);  // rounding, offset
-        const VoteRun run{ws_.bins, ws_.cos_q14, ws_.sin_q14, n_rho_, x, y, bias, shift};
-        uint32_t best_index = 0;
-        for (int32_t k = 0; k < 2; ++k) {
-            if (delta < 0)
-                withdraw_run(run, runs[k][0], runs[k][1]);
-            else
-                best = cast_run(run, runs[k][0], runs[k][1], best, &best_index,
-                                &stats_.saturated_votes);
-        }
-        if (best > 0) *best_bin = best_index;
-        if (delta > 0) stats_.votes += static_cast<uint32_t>(last - first + 1);
-        return best;
+        const uint32_t xy = (static_cast<uint32_t>(x) & 0xFFFFu) | (static_cast<uint32_t>(y) << 16);
+        v.run.bins = ws_.bins;
+        v.run.cos_sin_q14 = ws_.cos_sin_q14;
+        v.run.n_rho = n_rho_;
+        v.run.xy = xy;
+        v.run.bias = bias;
+        v.run.shift = shift;
+        v.run.below_threshold = static_cast<uint32_t>(p_.threshold - 1u);
+        return v;
     }
+
+    // Casts the point's votes; when a bin reaches the threshold, returns the highest bin's count
+    // with its index (θ index · rho bins + rho index; the first of equals) in *best_bin, else 0.
+    uint32_t cast(edge_point pt, uint32_t* best_bin) {
+        const Votes v = votes_of(pt);
+        const bool reached = cast_votes(v, &stats_.saturated_votes);
+        stats_.votes += static_cast<uint32_t>(v.runs[0][1] - v.runs[0][0] + 1) +
+                        static_cast<uint32_t>(v.runs[1][1] - v.runs[1][0] + 1);
+        return reached ? best_of_votes(v, best_bin) : 0;
+    }
+
+    // Withdraws the point's votes.
+    void withdraw(edge_point pt) { withdraw_votes(votes_of(pt)); }
 
     // The line being followed: minor = anchor_minor + (major - anchor_major)·slope, in 1/32 px.
     struct Track {
@@ -296,13 +379,118 @@ private:
         return d <= 2u || d >= 6u;
     }
 
-    bool spend_step() {
-        if (stats_.walk_steps >= p_.max_walk_steps) {
-            stats_.budget_exhausted = true;
-            return false;
+    // Whether such a point is fitted: within one bin (±22.5°) of the normal. A point 45° off
+    // (a corner's pixel, whose gradient is half each side's) belongs to the segment but not to
+    // its fit: its sub-pixel offset runs along the 45° axis, so its place across the line is
+    // off by up to half a pixel, enough to tilt a clean side.
+    static bool fitted_to(const Track& tr, edge_point p) {
+        const uint32_t d = (ep::dir(p) - tr.normal_axis) & 7u;
+        return d <= 1u || d >= 7u;
+    }
+
+    // Notes point i, found by the walk and not consumed, in the held list (in the edge list's
+    // spare words); a list too long for them is marked incomplete.
+    void hold(uint16_t i) {
+        if (held_count_ >= held_capacity_) {
+            held_complete_ = false;
+            return;
         }
-        ++stats_.walk_steps;
-        return true;
+        held_[held_count_] = i;
+        ++held_count_;
+    }
+
+    // Consumes point i, withdrawing its votes if it voted.
+    void consume_point(uint16_t i) {
+        edge_point& e = edges_[i];
+        if (ep::state(e) == ep::kVoted) withdraw(e);
+        e = ep::with_state(e, ep::kConsumed);
+    }
+
+    // Columns lo..hi of the walk's budget, one step each as the walk spends them; returns the
+    // last column the budget pays for (below lo when none).
+    int32_t pay_columns(int32_t lo, int32_t hi) {
+        const uint32_t columns = static_cast<uint32_t>(hi - lo + 1);
+        const uint32_t left = p_.max_walk_steps - stats_.walk_steps;
+        if (columns <= left) {
+            stats_.walk_steps += columns;
+            return hi;
+        }
+        stats_.walk_steps += left;
+        stats_.budget_exhausted = true;
+        return lo + static_cast<int32_t>(left) - 1;
+    }
+
+    // Consumes the corridor points of the track's columns lo..hi from the held list: every
+    // point the walk found there (the corridor's points off the walked line stay). One step of
+    // the budget per column, as consume_corridor.
+    void consume_held(const Track& tr, int32_t lo, int32_t hi) {
+        hi = pay_columns(lo, hi);
+        const int32_t corridor = static_cast<int32_t>(p_.corridor);
+        for (uint32_t k = 0; k < held_count_; ++k) {
+            const uint16_t i = held_[k];
+            const edge_point e = edges_[i];
+            if (ep::state(e) == ep::kConsumed) continue;
+            const int32_t x = static_cast<int32_t>(ep::x(e)), y = static_cast<int32_t>(ep::y(e));
+            const int32_t major = major_of(tr, x, y);
+            if (major < lo || major > hi) continue;
+            const int32_t off = minor_of(tr, x, y) - predict(tr, major);
+            if (off >= -corridor && off <= corridor) consume_point(i);
+        }
+    }
+
+    // The same by searching the corridor column by column: for a walk whose list outgrew the
+    // spare words.
+    void consume_corridor(const Track& tr, int32_t lo, int32_t hi) {
+        hi = pay_columns(lo, hi);
+        for (int32_t major = lo; major <= hi; ++major)
+            in_corridor(tr, major, predict(tr, major), [&](uint16_t i, int32_t) {
+                if (ep::state(edges_[i]) != ep::kConsumed) consume_point(i);
+            });
+    }
+
+    // The run of hits around the seed: the seed and the hits each way before the first gap of
+    // 2 px or more. The walk grows the segment outward from the seed, so a seed that is itself
+    // noise past a line's end would carry that end with it; this record lets the rule for runs
+    // past a gap (see follow()) judge the seed's run from the segment's side as well.
+    struct SeedRun {
+        bool open[2] = {true, true};  // the way is still within the run (no gap of 2 px yet)
+        int32_t columns = 1;          // hit columns of the run, the seed's included
+        int32_t end32[2][2];          // its last hit each way, x32 and y32
+        int32_t gap[2] = {};          // each way: the gap past the run and the first hit past it
+        int32_t beyond32[2][2] = {};
+        // Its points besides the seed: held-list entries [begin, end) of each pass.
+        uint32_t begin[3] = {}, end[3] = {};
+        SeedRun(int32_t sx32, int32_t sy32) {
+            end32[0][0] = end32[1][0] = sx32;
+            end32[0][1] = end32[1][1] = sy32;
+        }
+    };
+
+    // When the segment goes on past a gap g on one side of the seed's run only and the run has
+    // fewer than g hit columns, the run is noise past the segment's end (the rule for runs past
+    // a gap, seen from the segment's side): its points leave the fit and that end moves to the
+    // segment's first hit past the gap.
+    void drop_lone_seed_run(const SeedRun& run, const Track& tr, uint16_t seed,
+                            int32_t (&end32)[2][2], Moments& m, uint16_t (&dir_count)[16]) const {
+        if (!held_complete_) return;  // the run's points are not all in the list
+        for (int way = 0; way < 2; ++way) {
+            const int other = 1 - way;
+            const bool segment_past_gap = !run.open[way] && (end32[way][0] != run.end32[way][0] ||
+                                                             end32[way][1] != run.end32[way][1]);
+            if (!segment_past_gap || !run.open[other] || run.columns >= run.gap[way]) continue;
+            const edge_point sp = edges_[seed];
+            const int32_t sx32 = ep::x32(sp), sy32 = ep::y32(sp);
+            m.add(0, 0, -1);
+            --dir_count[ep::dir(sp)];
+            for (int pass = 0; pass < 3; ++pass)
+                for (uint32_t k = run.begin[pass]; k < run.end[pass]; ++k) {
+                    const edge_point e = edges_[held_[k]];
+                    if (dir_count[ep::dir(e)] > 0) --dir_count[ep::dir(e)];
+                    if (fitted_to(tr, e)) m.add(ep::x32(e) - sx32, ep::y32(e) - sy32, -1);
+                }
+            memcpy(end32[other], run.beyond32[way], sizeof end32[other]);
+            return;
+        }
     }
 
     // Follows the line of θ bin `t` through seed point `seed`; true with the segment when it
@@ -312,13 +500,16 @@ private:
         const int32_t sx32 = ep::x32(sp), sy32 = ep::y32(sp);
         Track tr{};
         // Normal (cos θ, sin θ); the line runs along (−sin θ, cos θ).
-        const int32_t c = ws_.cos_q14[t], s = ws_.sin_q14[t];
+        const int32_t c = cos_of(ws_.cos_sin_q14[t]), s = sin_of(ws_.cos_sin_q14[t]);
         tr.major_is_y = (c < 0 ? -c : c) > (s < 0 ? -s : s);
         tr.normal_axis = ((t * 16u / p_.theta_bins) + 1u) / 2u & 7u;  // round(θ / 22.5°) mod 8
         tr.anchor_major32 = major_of(tr, sx32, sy32);
         tr.anchor_minor32 = minor_of(tr, sx32, sy32);
         set_direction(tr, -s, c);
 
+        held_count_ = 0;
+        held_complete_ = true;
+        hold(seed);
         Moments m;
         m.add(0, 0);
         uint16_t dir_count[16] = {};  // fitted points per gradient direction bin (polarity)
@@ -329,6 +520,11 @@ private:
             major_of(tr, static_cast<int32_t>(ep::x(sp)), static_cast<int32_t>(ep::y(sp)));
         int32_t last_major[2] = {seed_major, seed_major};  // of the last hit each way, pixels
         uint32_t refits = 0, refits_in_way0 = 0;
+        // The walk's budget, counted here and added to the stats when the walk ends (a local
+        // the compiler keeps in a register).
+        const uint32_t steps_left = p_.max_walk_steps - stats_.walk_steps;
+        uint32_t steps = 0;
+        SeedRun seed_run(sx32, sy32);
         // Way 0, way 1, then way 0 again: way 0 starts along the seed bin's direction, which
         // may be a few degrees off (a bin of 2° that noise helped to the top), and until the
         // 8th point's refit it can leave the line after a few pixels. When it ended before any
@@ -341,16 +537,24 @@ private:
                 refit(tr, m, sx32, sy32);
             }
             const int32_t step = way == 0 ? 1 : -1;
+            seed_run.begin[pass] = seed_run.end[pass] = held_count_;
             int32_t gap = 0;
             int32_t run = 0, run_gap = 0;  // hits of the run not yet in the segment, its gap
             int32_t run32[2] = {0, 0};     // that run's last hit, x32 and y32
             for (int32_t major = last_major[way] + step; major >= 0 && major < extent;
                  major += step) {
-                if (!spend_step()) return false;
+                if (steps == steps_left) {
+                    stats_.walk_steps += steps;
+                    stats_.budget_exhausted = true;
+                    return false;
+                }
+                ++steps;
                 const int32_t i = corridor_points(tr, major, predict(tr, major), [&](uint16_t f) {
+                    hold(f);
                     const edge_point fp = edges_[f];
-                    m.add(ep::x32(fp) - sx32, ep::y32(fp) - sy32);
                     if (dir_count[ep::dir(fp)] < 0xFFFFu) ++dir_count[ep::dir(fp)];
+                    if (!fitted_to(tr, fp)) return;
+                    m.add(ep::x32(fp) - sx32, ep::y32(fp) - sy32);
                     // Refit at 8, 16, 32, ... points: the direction settles quickly, and each
                     // fit costs two CORDIC runs.
                     if (m.n >= 8 && (m.n & (m.n - 1)) == 0) {
@@ -368,6 +572,17 @@ private:
                 // has g hits or a later run follows it: a noise pixel or two beyond a corner
                 // would otherwise carry the end up to max_line_gap past it.
                 const int32_t here[2] = {ep::x32(hp), ep::y32(hp)};
+                if (seed_run.open[way]) {
+                    if (gap < 2) {
+                        ++seed_run.columns;
+                        memcpy(seed_run.end32[way], here, sizeof here);
+                        seed_run.end[pass] = held_count_;
+                    } else {  // the first hit past a gap of 2 px or more
+                        seed_run.open[way] = false;
+                        seed_run.gap[way] = gap;
+                        memcpy(seed_run.beyond32[way], here, sizeof here);
+                    }
+                }
                 if (gap >= 2) {
                     if (run > 0) memcpy(end32[way], run32, sizeof run32);
                     run = 1;
@@ -383,6 +598,8 @@ private:
                 gap = 0;
             }
         }
+        stats_.walk_steps += steps;
+        drop_lone_seed_run(seed_run, tr, seed, end32, m, dir_count);
         // Too few points, or a run too short along its major axis (the line is at most √5 times
         // longer, |slope| <= 2): rejected before the final fit.
         const int32_t major_extent =
@@ -412,17 +629,10 @@ private:
         if (fitted) aim(tr, line);
         const int32_t a = (major_of(tr, end32[1][0], end32[1][1]) + 16) >> 5;
         const int32_t b = (major_of(tr, end32[0][0], end32[0][1]) + 16) >> 5;
-        for (int32_t major = a < b ? a : b; major <= (a < b ? b : a); ++major) {
-            if (!spend_step()) break;
-            in_corridor(tr, major, predict(tr, major), [&](uint16_t i, int32_t) {
-                edge_point& e = edges_[i];
-                if (ep::state(e) == ep::kVoted) {
-                    uint32_t unused = 0;
-                    vote(e, -1, &unused);
-                }
-                e = ep::with_state(e, ep::kConsumed);
-            });
-        }
+        if (held_complete_)
+            consume_held(tr, a < b ? a : b, a < b ? b : a);
+        else
+            consume_corridor(tr, a < b ? a : b, a < b ? b : a);
         out = make_segment(line, t1, t2, static_cast<uint16_t>(m.n > 65535 ? 65535 : m.n));
         out.bright_side = bright_side(out.theta, dir_count);
         return true;
@@ -440,6 +650,12 @@ private:
     // Where the last search in row y (keyed y mod 8) ended: a walk along x asks the same few
     // rows for consecutive columns (see EdgeList::find_near). Any value is safe.
     mutable uint32_t row_hint_[8] = {};
+    // The points the current walk found and did not find consumed, to consume them when the
+    // segment is kept (see hold()).
+    uint16_t* held_;
+    uint32_t held_capacity_;  // indices the spare words hold
+    uint32_t held_count_ = 0;
+    bool held_complete_ = true;
 };
 
 }  // namespace

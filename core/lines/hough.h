@@ -48,8 +48,8 @@ struct HoughStats {
 struct HoughWorkspace {
     uint8_t* bins;  // theta_bins × rho bins counters
     uint32_t bin_capacity;
-    int16_t* cos_q14;  // per θ bin, 1.0 = 2^14
-    int16_t* sin_q14;
+    uint32_t* cos_sin_q14;  // per θ bin: cos in the low 16 bits, sin in the high, signed,
+                            // 1.0 = 2^14 (one load, and one SMUAD on a Cortex-M4, per vote)
     uint16_t theta_capacity;
     uint16_t* table_bins;  // theta_bins the tables hold (0: not filled): a frame with the same
                            // theta_bins as the last one reuses them (90 CORDIC runs saved)
@@ -72,7 +72,8 @@ constexpr uint32_t hough_bins_for(uint32_t width, uint32_t height, uint32_t thet
 // Runs PPHT over `edges` of a width × height frame. Segments go to out[0 .. *count). Returns
 // bad_size for a bad frame or parameters that need more bins than the workspace holds
 // (nothing is written then); ok otherwise — capacity and budget limits are in `stats`.
-// Marks the edge points' states (voted, consumed) as it goes.
+// Marks the edge points' states (voted, consumed) as it goes, and keeps its list of the points
+// a walk found in the edge list's spare words (the points' strengths are gone after it).
 Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const HoughParams& params,
                       const HoughWorkspace& ws, Segment* out, uint16_t out_capacity,
                       uint16_t* count, HoughStats* stats);
@@ -81,11 +82,10 @@ Status hough_segments(EdgeList& edges, uint16_t width, uint16_t height, const Ho
 template <uint32_t BinCapacity, uint16_t MaxThetaBins>
 struct HoughStorage {
     uint8_t bins[BinCapacity] = {};
-    int16_t cos_q14[MaxThetaBins] = {};
-    int16_t sin_q14[MaxThetaBins] = {};
+    uint32_t cos_sin_q14[MaxThetaBins] = {};
     uint16_t table_bins = 0;
     HoughWorkspace view() {
-        return HoughWorkspace{bins, BinCapacity, cos_q14, sin_q14, MaxThetaBins, &table_bins};
+        return HoughWorkspace{bins, BinCapacity, cos_sin_q14, MaxThetaBins, &table_bins};
     }
 };
 

@@ -1,7 +1,9 @@
-// A pseudo-random permutation of [0, n) with no memory: a 4-round Feistel network on the
-// smallest even number of bits covering n, keyed from the project PRNG, with cycle walking
-// (re-apply until the value falls below n, which keeps it a bijection). PPHT visits edge
-// points in this order, so every platform visits them in the same order for the same seed.
+// A pseudo-random permutation of [0, n) with no memory, drawn one index at a time: a full-period
+// linear congruential sequence over the smallest power of two 2^b >= n (every b-bit value once
+// per period), each value scrambled by a b-bit bijection (xorshift, odd multiply, xorshift) so
+// that successive indices land far apart, and values >= n skipped (fewer than half of them).
+// About 15 instructions an index on a Cortex-M4. Keyed from the project PRNG: every platform
+// visits the edge points in the same order for the same seed.
 #pragma once
 #include <stdint.h>
 
@@ -12,36 +14,36 @@ namespace qt {
 class VisitOrder {
 public:
     VisitOrder(uint32_t n, uint64_t seed) : n_(n) {
-        while ((1u << (2 * half_bits_)) < n && half_bits_ < 15) ++half_bits_;
+        while ((1u << bits_) < n && bits_ < 31) ++bits_;
+        mask_ = (1u << bits_) - 1u;
+        shift_ = (bits_ + 1u) / 2u;
         Pcg32 rng(seed, 0x7669736974ULL);  // own stream: independent of other uses of `seed`
-        for (uint32_t& k : keys_) k = rng.next();
+        state_ = rng.next() & mask_;
+        increment_ = rng.next() | 1u;  // odd, with kMultiplier = 1 mod 4: the full period 2^b
     }
 
-    // The k-th index of the order, for k < n.
-    uint32_t at(uint32_t k) const {
-        uint32_t v = k;
-        do v = permute(v);
-        while (v >= n_);
+    // The next index of the order: n calls give each of 0 .. n - 1 once.
+    uint32_t next() {
+        uint32_t v;
+        do {
+            state_ = (state_ * kMultiplier + increment_) & mask_;
+            v = state_ ^ (state_ >> shift_);
+            v = (v * kScramble) & mask_;
+            v ^= v >> shift_;
+        } while (v >= n_);
         return v;
     }
 
 private:
-    uint32_t permute(uint32_t v) const {
-        const uint32_t mask = (1u << half_bits_) - 1u;
-        uint32_t left = v >> half_bits_, right = v & mask;
-        for (uint32_t key : keys_) {
-            // Round function: multiplicative hash of the keyed right half, top bits.
-            const uint32_t f = ((right ^ key) * 0x9E3779B1u) >> (32 - half_bits_);
-            const uint32_t next_right = (left ^ f) & mask;
-            left = right;
-            right = next_right;
-        }
-        return (left << half_bits_) | right;
-    }
+    static constexpr uint32_t kMultiplier = 0x2C9277B5u;  // = 1 mod 4
+    static constexpr uint32_t kScramble = 0x9E3779B1u;    // odd: invertible modulo 2^b
 
     uint32_t n_;
-    uint32_t half_bits_ = 1;
-    uint32_t keys_[4] = {};
+    uint32_t bits_ = 1;
+    uint32_t mask_ = 1;
+    uint32_t shift_ = 1;
+    uint32_t state_ = 0;
+    uint32_t increment_ = 1;
 };
 
 }  // namespace qt

@@ -114,11 +114,13 @@ bool intersect_lines(const Segment& a, SinCos na, const Segment& b, SinCos nb, P
     return true;
 }
 
-q16_16 distance(Point16 a, Point16 b) {
+uint64_t distance2(Point16 a, Point16 b) {
     const int64_t dx = wide(b.x) - wide(a.x), dy = wide(b.y) - wide(a.y);  // |d| < 2^32
     // dx² + dy² < 2^63 for coordinates within ±2^30 raw (±16384 px), as intersect_lines gives.
-    return q16_16::from_raw(isqrt64(static_cast<uint64_t>(dx * dx + dy * dy)));
+    return static_cast<uint64_t>(dx * dx + dy * dy);
 }
+
+q16_16 distance(Point16 a, Point16 b) { return q16_16::from_raw(isqrt64(distance2(a, b))); }
 
 int64_t shoelace2(const Point16 c[4]) {
     int64_t sum = 0;

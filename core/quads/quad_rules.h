@@ -103,6 +103,9 @@ bool intersect_lines(const Segment& a, SinCos na, const Segment& b, SinCos nb, P
 
 // Length of the segment from a to b, pixels, rounded down to 2^-16 px.
 q16_16 distance(Point16 a, Point16 b);
+// Its square in 2^-32 px² units, below 2^63 (distance() is its integer square root): to
+// compare lengths without the root.
+uint64_t distance2(Point16 a, Point16 b);
 
 // Twice the signed area, Σ (x_i·y_{i+1} − x_{i+1}·y_i), in px² (q16_16 squared = 2^-32 px²
 // units); negative for anti-clockwise as seen in the image.

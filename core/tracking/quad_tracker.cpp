@@ -1,5 +1,7 @@
 #include "tracking/quad_tracker.h"
 
+#include "base/isqrt.h"
+
 namespace qt {
 
 namespace {
@@ -228,16 +230,17 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
             for (int i = 0; i < 4; ++i) {
                 const Point16 a = corners[i], b = corners[(i + 1) % 4];
                 int best = -1;
-                q16_16 best_len{0};
+                uint64_t best_len2 = 0;  // its squared length; the length is compared below
                 for (uint16_t j = 0; j < n && j < 256; ++j) {
                     if (used[j / 32] & (1u << (j % 32))) continue;
                     const Segment& s = lines[j];
                     if (!gated(s, predicted[i])) continue;
                     if (side_overlap(a, b, s).raw <= 0) continue;
-                    const q16_16 len = distance(Point16{s.x1, s.y1}, Point16{s.x2, s.y2});
-                    if (best < 0 || len.raw > best_len.raw) {
+                    // Longer to 2^-16 px (distance()): a longer square first, then its root.
+                    const uint64_t len2 = distance2(Point16{s.x1, s.y1}, Point16{s.x2, s.y2});
+                    if (best < 0 || (len2 > best_len2 && isqrt64(len2) > isqrt64(best_len2))) {
                         best = j;
-                        best_len = len;
+                        best_len2 = len2;
                     }
                 }
                 if (best >= 0) {

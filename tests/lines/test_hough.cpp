@@ -6,6 +6,7 @@
 
 #include "base/prng.h"
 #include "lines/line_detector.h"
+#include "lines/visit_order.h"
 #include "scene/line_scene.h"
 
 using namespace qt;
@@ -230,25 +231,31 @@ TEST_CASE(
     };
     static EdgeListStorage<256, 100> storage;
     static HoughStorage<hough_bins_for(160, 100, 90, 2), 90> accumulator;
-    for (const Case& c : cases) {
-        EdgeList list = storage.view();
-        REQUIRE(list.begin_frame(100) == Status::ok);
-        list.begin_row(50);
-        for (int x = 20; x <= 99; ++x) REQUIRE(list.push(static_cast<uint16_t>(x), 4, 0, 100));
-        for (int x : c.after) REQUIRE(list.push(static_cast<uint16_t>(x), 4, 0, 100));
-        list.end_frame();
-        Segment out[4];
-        uint16_t count = 0;
-        HoughStats stats;
-        REQUIRE(hough_segments(list, 160, 100, HoughParams{}, accumulator.view(), out, 4, &count,
-                               &stats) == Status::ok);
-        INFO("points past the gap: " << c.after.size() << ", expected end " << c.end_x);
-        REQUIRE(count == 1);
-        const double right = std::max(out[0].x1.raw, out[0].x2.raw) / 65536.0;
-        const double left = std::min(out[0].x1.raw, out[0].x2.raw) / 65536.0;
-        REQUIRE(left == Approx(20).margin(0.01));
-        REQUIRE(right == Approx(c.end_x).margin(0.01));
-    }
+    // Every visiting order: whichever point's vote starts the walk (a noise point past the gap
+    // among them), the rule gives the same end.
+    for (uint64_t seed = 1; seed <= 60; ++seed)
+        for (const Case& c : cases) {
+            EdgeList list = storage.view();
+            REQUIRE(list.begin_frame(100) == Status::ok);
+            list.begin_row(50);
+            for (int x = 20; x <= 99; ++x) REQUIRE(list.push(static_cast<uint16_t>(x), 4, 0, 100));
+            for (int x : c.after) REQUIRE(list.push(static_cast<uint16_t>(x), 4, 0, 100));
+            list.end_frame();
+            Segment out[4];
+            uint16_t count = 0;
+            HoughStats stats;
+            HoughParams params;
+            params.seed = seed;
+            REQUIRE(hough_segments(list, 160, 100, params, accumulator.view(), out, 4, &count,
+                                   &stats) == Status::ok);
+            INFO("points past the gap: " << c.after.size() << ", expected end " << c.end_x
+                                         << ", seed " << seed);
+            REQUIRE(count == 1);
+            const double right = std::max(out[0].x1.raw, out[0].x2.raw) / 65536.0;
+            const double left = std::min(out[0].x1.raw, out[0].x2.raw) / 65536.0;
+            REQUIRE(left == Approx(20).margin(0.01));
+            REQUIRE(right == Approx(c.end_x).margin(0.01));
+        }
 }
 
 TEST_CASE("a full segment list keeps the longest segments, whatever the visiting order",
@@ -283,4 +290,81 @@ TEST_CASE("a full segment list keeps the longest segments, whatever the visiting
             CHECK(len > 85);  // of the 90- and 100-px bars (ends stop a pixel or two short)
         }
     }
+}
+
+TEST_CASE("PPHT's visiting order is a permutation, spread over the list, set by the seed",
+          "[hough]") {
+    for (uint32_t n : {0u, 1u, 2u, 3u, 5u, 64u, 1000u, 4097u, 65535u}) {
+        std::vector<bool> seen(n, false);
+        VisitOrder order(n, 7);
+        double jumps = 0;
+        uint32_t last = 0;
+        for (uint32_t k = 0; k < n; ++k) {
+            const uint32_t v = order.next();
+            REQUIRE(v < n);
+            REQUIRE_FALSE(seen[v]);
+            seen[v] = true;
+            if (k > 0) jumps += std::abs(static_cast<double>(v) - last);
+            last = v;
+        }
+        // Consecutive indices of a random permutation lie n/3 apart on average; a scan in list
+        // (raster) order would give 1.
+        if (n >= 1000) {
+            const double mean = jumps / (n - 1);
+            INFO("n " << n << ": mean jump " << mean);
+            REQUIRE(mean > n / 4.0);
+            REQUIRE(mean < n / 2.5);
+        }
+    }
+    VisitOrder a(1000, 1), b(1000, 2);
+    int same = 0;
+    for (int k = 0; k < 1000; ++k) same += a.next() == b.next();
+    REQUIRE(same < 20);
+}
+
+TEST_CASE("a walk's list too long for the spare words falls back to searching the corridor",
+          "[hough]") {
+    // A 200-px horizontal and a 150-px vertical edge, each one segment. In an edge list of 360
+    // points the list of points a walk found (in its spare words, capacity / 2 = 180 of them)
+    // overflows on the horizontal edge, whose points are then consumed by searching its
+    // corridor again; in a list of 2048 they all come from the list. Both give the same
+    // segments and consume every point.
+    auto run = [](auto& storage, std::vector<Segment>& segments, uint32_t& unconsumed) {
+        EdgeList list = storage.view();
+        REQUIRE(list.begin_frame(240) == Status::ok);
+        for (uint16_t y = 0; y < 240; ++y) {
+            list.begin_row(y);
+            if (y >= 40 && y < 190) REQUIRE(list.push(250, 0, 0, 100));
+            if (y == 20)
+                for (uint16_t x = 10; x < 210; ++x) REQUIRE(list.push(x, 4, 0, 100));
+        }
+        list.end_frame();
+        static HoughStorage<hough_bins_for(320, 240, 90, 2), 90> accumulator;
+        Segment out[8];
+        uint16_t count = 0;
+        HoughStats stats;
+        REQUIRE(hough_segments(list, 320, 240, HoughParams{}, accumulator.view(), out, 8, &count,
+                               &stats) == Status::ok);
+        segments.assign(out, out + count);
+        unconsumed = 0;
+        for (uint16_t i = 0; i < list.size(); ++i)
+            unconsumed += ep::state(list[i]) != ep::kConsumed;
+    };
+    static EdgeListStorage<360, 240> small;
+    static EdgeListStorage<2048, 240> large;
+    std::vector<Segment> from_corridor, from_list;
+    uint32_t left_corridor = 0, left_list = 0;
+    run(small, from_corridor, left_corridor);
+    run(large, from_list, left_list);
+    REQUIRE(from_list.size() == 2);
+    REQUIRE(from_corridor.size() == 2);
+    for (size_t k = 0; k < 2; ++k) {
+        REQUIRE(from_list[k].x1.raw == from_corridor[k].x1.raw);
+        REQUIRE(from_list[k].y1.raw == from_corridor[k].y1.raw);
+        REQUIRE(from_list[k].x2.raw == from_corridor[k].x2.raw);
+        REQUIRE(from_list[k].y2.raw == from_corridor[k].y2.raw);
+        REQUIRE(from_list[k].theta == from_corridor[k].theta);
+    }
+    REQUIRE(left_list == 0);
+    REQUIRE(left_corridor == 0);
 }

@@ -99,8 +99,11 @@ TEST_CASE("scenes that once lost a side keep every side", "[accuracy]") {
 }
 
 TEST_CASE("drawn 2-px lines at noise 5: both sides merge into the centre line", "[accuracy]") {
+    // The false positives of these scenes move by about a tenth with PPHT's visiting order alone
+    // (159 to 196 on 400 scenes over the orders tried), so the bound is on 200 scenes rather
+    // than on one order's luck with 50.
     Totals t;
-    constexpr int kScenes = 50;
+    constexpr int kScenes = 200;
     for (int i = 0; i < kScenes; ++i)
         t.add(score(scene::random_line_scene(noisy(2000 + i), 4, 40, 150)));
     INFO("found " << t.found << " of " << t.scored << ", false positives " << t.false_positives);
