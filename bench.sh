@@ -20,9 +20,10 @@
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
 #                  false detections, time, beside OpenCV's squares.cpp recipe
 #   photos-host    boards composited onto real photographs (opencv-doc; held out: python3-skimage),
-#                  QVGA and VGA, unoccluded / occluded / board-free, 500 scenes each, beside
-#                  OpenCV's squares.cpp recipe, and a 150-frame tracked sequence; pictures of the
-#                  misses in bench_out/photos
+#                  QVGA and VGA, unoccluded / occluded / board-free, 1500 scenes each (a point
+#                  moved by up to 0.6 with PPHT's visiting order alone at 500; other sizes:
+#                  BENCH_PHOTO_SCENES=N), beside OpenCV's squares.cpp recipe, and a 150-frame
+#                  tracked sequence; pictures of the misses in bench_out/photos
 #   homography-host  RANSAC homography on generated inter-frame pairs (200 pairs, 0-50 % outliers):
 #                  corner error, inliers, iterations, time, beside OpenCV's findHomography
 #                  (RANSAC, RHO)
@@ -146,10 +147,10 @@ run_bench() {
             ensure_packages opencv-doc netpbm python3-skimage
             host_build bench_photo_boards real_photos heldout_photos
             rm -rf bench_out/photos && mkdir -p bench_out/photos
-            "$b/bench_photo_boards" build/host/photos --scenes "${BENCH_PHOTO_SCENES:-500}" \
+            "$b/bench_photo_boards" build/host/photos --scenes "${BENCH_PHOTO_SCENES:-1500}" \
                 --pictures bench_out/photos
             echo "Held out: photographs never used to choose a parameter (python3-skimage)."
-            "$b/bench_photo_boards" build/host/photos_heldout --scenes "${BENCH_PHOTO_SCENES:-500}" \
+            "$b/bench_photo_boards" build/host/photos_heldout --scenes "${BENCH_PHOTO_SCENES:-1500}" \
                 --no-sequence ;;
         track-host)
             host_build bench_track
