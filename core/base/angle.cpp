@@ -56,6 +56,7 @@ angle_t atan2_angle(int32_t y, int32_t x) {
         Y *= pow2(k);
     }
     int32_t xi = static_cast<int32_t>(X), yi = static_cast<int32_t>(Y);
+#pragma GCC unroll 30  // shifts and table entries become constants
     for (int i = 0; i < kIterations; ++i) {
         const int32_t dx = xi >> i, dy = yi >> i;
         if (yi > 0) {  // rotate clockwise by atan(2^-i)
@@ -85,6 +86,7 @@ SinCos sin_cos(angle_t a) {
     }
     int32_t x = kCordicGainInverse, y = 0;
     int32_t zi = static_cast<int32_t>(z);
+#pragma GCC unroll 30  // as in atan2_angle
     for (int i = 0; i < kIterations; ++i) {
         const int32_t dx = x >> i, dy = y >> i;
         const int32_t step = static_cast<int32_t>(kAtanTable[i]);

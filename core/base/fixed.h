@@ -81,6 +81,25 @@ constexpr int64_t shr_round_half_away(int64_t v, int n) {
     return n == 0 ? v : v >= 0 ? (v + pow2(n - 1)) >> n : -((-v + pow2(n - 1)) >> n);
 }
 
+// num / den truncated towards zero (C++'s /) for 0 < den < 2^16: four 32-by-32-bit divisions of
+// 16-bit digits (one UDIV each on a Cortex-M3/M4, where a 64-bit division is a library call
+// several times longer). Other den: the plain division. |num| <= 2^63 - 1.
+constexpr int64_t div_by_small(int64_t num, int64_t den) {
+    if (den <= 0 || den >= 65536) return num / den;
+    const bool neg = num < 0;
+    const uint64_t u = neg ? 0u - static_cast<uint64_t>(num) : static_cast<uint64_t>(num);
+    const uint32_t d = static_cast<uint32_t>(den);
+    uint32_t r = 0;
+    uint64_t q = 0;
+    for (int k = 3; k >= 0; --k) {  // r < d < 2^16: each partial dividend fits 32 bits
+        const uint32_t part = (r << 16) | static_cast<uint32_t>((u >> (16 * k)) & 0xFFFFu);
+        const uint32_t digit = part / d;
+        r = part - digit * d;
+        q = (q << 16) | digit;
+    }
+    return neg ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
+}
+
 // num / den rounded to nearest, ties away from zero. den != 0, |num|, |den| <= 2^62.
 constexpr int64_t div_round_half_away(int64_t num, int64_t den) {
     QT_PRECONDITION(den != 0 && num >= -pow2(62) && num <= pow2(62) && den >= -pow2(62) &&
@@ -88,7 +107,7 @@ constexpr int64_t div_round_half_away(int64_t num, int64_t den) {
     const bool neg = (num < 0) != (den < 0);
     const int64_t n = num < 0 ? -num : num;
     const int64_t d = den < 0 ? -den : den;
-    const int64_t q = (n + d / 2) / d;
+    const int64_t q = div_by_small(n + d / 2, d);
     return neg ? -q : q;
 }
 

@@ -33,11 +33,19 @@ constexpr uint16_t isqrt32(uint32_t n) {
                         n, uint32_t{1} << ((31 - __builtin_clz(n)) & ~1)));
 }
 
-// floor(sqrt(n)) for every 64-bit n; below 2^32 in 32-bit arithmetic (the same digits).
+// floor(sqrt(n)) for every 64-bit n; below 2^32 in 32-bit arithmetic (the same digits). Above,
+// the root's high bits are those of the root of n's top 32 bits (from an even shift 2h):
+// r0·2^h <= sqrt(n) < (r0 + 1)·2^h; its h low bits follow one by one, each kept when the
+// square stays within n (a 32 x 32 -> 64-bit product: the root is below 2^32).
 constexpr uint32_t isqrt64(uint64_t n) {
-    return (n >> 32) == 0 ? isqrt32(static_cast<uint32_t>(n))
-                          : static_cast<uint32_t>(detail::isqrt_bits<uint64_t>(
-                                n, uint64_t{1} << ((63 - __builtin_clzll(n)) & ~1)));
+    if ((n >> 32) == 0) return isqrt32(static_cast<uint32_t>(n));
+    const int h = (65 - __builtin_clzll(n) - 32) / 2;  // n >> 2h < 2^32
+    uint32_t r = static_cast<uint32_t>(isqrt32(static_cast<uint32_t>(n >> (2 * h)))) << h;
+    for (int b = h - 1; b >= 0; --b) {
+        const uint32_t t = r | (uint32_t{1} << b);
+        if (static_cast<uint64_t>(t) * t <= n) r = t;
+    }
+    return r;
 }
 
 // sqrt(n) rounded to nearest: floor(sqrt(n)) + 1 when n > r*r + r (the midpoint

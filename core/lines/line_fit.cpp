@@ -6,13 +6,17 @@ bool fit_line(const Moments& m, int32_t anchor_x32, int32_t anchor_y32, FittedLi
     if (m.n <= 0) return false;
     // Central second moments (×1, in (1/32 px)²); the divisions round towards zero, an error
     // of under one unit against sums of thousands.
-    int64_t cxx = m.sxx - m.sx * m.sx / m.n;
-    int64_t cyy = m.syy - m.sy * m.sy / m.n;
-    int64_t cxy = m.sxy - m.sx * m.sy / m.n;
+    int64_t cxx = m.sxx - div_by_small(m.sx * m.sx, m.n);
+    int64_t cyy = m.syy - div_by_small(m.sy * m.sy, m.n);
+    int64_t cxy = m.sxy - div_by_small(m.sx * m.sy, m.n);
     int64_t a = 2 * cxy, b = cxx - cyy;
-    while (abs64(a) >= (int64_t{1} << 30) || abs64(b) >= (int64_t{1} << 30)) {
-        a /= 2;
-        b /= 2;
+    // Halved (truncating towards zero) until both are below 2^30: k halvings at once, k from
+    // the larger magnitude's top bit.
+    const uint64_t larger = static_cast<uint64_t>(abs64(a) > abs64(b) ? abs64(a) : abs64(b));
+    if (larger >= (uint64_t{1} << 30)) {
+        const int k = 64 - __builtin_clzll(larger) - 30;
+        a = a < 0 ? -(abs64(a) >> k) : a >> k;
+        b = b < 0 ? -(abs64(b) >> k) : b >> k;
     }
     // Direction angle φ in [0°, 180°): half of the angle of (Sxx − Syy, 2 Sxy).
     const angle_t phi = atan2_angle(static_cast<int32_t>(a), static_cast<int32_t>(b)) / 2;

@@ -42,6 +42,24 @@ TEST_CASE("div_round_half_away for every sign combination", "[fixed]") {
         }
 }
 
+TEST_CASE("div_by_small equals C++'s division", "[fixed]") {
+    Pcg32 rng(11);
+    for (int i = 0; i < 200000; ++i) {
+        // Numerators of every magnitude and sign (|num| < 2^63), divisors below 2^16 and a few
+        // beyond (the plain division).
+        const int64_t num =
+            static_cast<int64_t>((static_cast<uint64_t>(rng.next()) << 31 | rng.next() >> 1) >>
+                                 (rng.next() % 63)) *
+            (rng.next() % 2 ? 1 : -1);
+        const int64_t den = i % 10 == 0 ? static_cast<int64_t>(rng.next() % 4000000) + 1
+                                        : static_cast<int64_t>(rng.next() % 65535) + 1;
+        REQUIRE(div_by_small(num, den) == num / den);
+    }
+    for (const int64_t den : {1, 2, 3, 255, 65535})
+        for (const int64_t num : {INT64_MAX, -INT64_MAX, int64_t{0}, int64_t{-1}, int64_t{65535}})
+            REQUIRE(div_by_small(num, den) == num / den);
+}
+
 TEST_CASE("saturate clamps to the destination range", "[fixed]") {
     REQUIRE(saturate<int16_t>(40000) == 32767);
     REQUIRE(saturate<int16_t>(-40000) == -32768);

@@ -44,6 +44,14 @@ TEST_CASE("isqrt64 and isqrt64_round", "[isqrt]") {
         const bool nearer_hi = 4 * static_cast<unsigned __int128>(n) > (lo + hi) * 2 - 1;
         REQUIRE(rr == (nearer_hi && r < UINT32_MAX ? r + 1ull : r));
     }
+    // Around squares of every size: the root's low bits are found one by one above 2^32.
+    for (int bits = 16; bits <= 32; ++bits)
+        for (uint64_t d = 0; d < 50; ++d) {
+            const uint64_t r = (uint64_t{1} << bits) - 1 - d * 977;
+            REQUIRE(isqrt64(r * r) == r);
+            REQUIRE(isqrt64(r * r - 1) == r - 1);
+            if (r < UINT32_MAX) REQUIRE(isqrt64(r * r + 2 * r) == r);  // (r + 1)² - 1
+        }
     REQUIRE(isqrt64(UINT64_MAX) == UINT32_MAX);
     REQUIRE(isqrt64_round(UINT64_MAX) == UINT32_MAX);
     REQUIRE(isqrt64_round(12) == 3);  // sqrt(12) = 3.46
