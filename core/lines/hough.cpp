@@ -63,11 +63,6 @@ struct VoteRun {
     uint32_t below_threshold;  // the vote threshold − 1
 };
 
-// The bins of θ index t start at t·n_rho.
-inline uint32_t bin_index(const VoteRun& r, const uint32_t* cs, uint32_t row) {
-    return row + static_cast<uint32_t>((dot_q14(r.xy, *cs) + r.bias) >> r.shift);
-}
-
 // A point's votes: the θ indices within the window about its gradient direction, as up to two
 // runs [first, last] that do not wrap past 0° or 180° (the second empty, {1, 0}, unless the
 // window wraps), and the runs' arithmetic.
@@ -76,60 +71,54 @@ struct Votes {
     VoteRun run;
 };
 
+// Calls visit(index) for each of the votes' bins in θ order; r: a copy of v.run in locals. The
+// bins of θ index t start at t·n_rho.
+template <class Visit>
+inline void for_each_bin(const Votes& v, const VoteRun& r, Visit&& visit) {
+    for (int32_t k = 0; k < 2; ++k) {
+        const uint32_t* cs = r.cos_sin_q14 + v.runs[k][0];
+        const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
+        for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
+             ++cs, row += r.n_rho)
+            visit(row + static_cast<uint32_t>((dot_q14(r.xy, *cs) + r.bias) >> r.shift));
+    }
+}
+
 // +1 on each bin (saturating at 255: the votes lost are added to *saturated); returns whether
 // a bin reached the threshold. Out of line, both runs in one call.
 __attribute__((noinline)) bool cast_votes(const Votes& v, uint32_t* saturated) {
     const VoteRun r = v.run;
     uint32_t gained = 0, reached = 0, cast = 0;
-    for (int32_t k = 0; k < 2; ++k) {
-        const uint32_t* cs = r.cos_sin_q14 + v.runs[k][0];
-        const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
-        for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
-             ++cs, row += r.n_rho) {
-            const uint32_t index = bin_index(r, cs, row);
-            const uint32_t bin = r.bins[index];
-            const uint32_t raised = saturating_inc(bin);
-            r.bins[index] = static_cast<uint8_t>(raised);
-            gained = add_increase(raised, bin, gained);
-            reached |= excess(raised, r.below_threshold);
-            ++cast;
-        }
-    }
+    for_each_bin(v, r, [&](uint32_t index) {
+        const uint32_t bin = r.bins[index];
+        const uint32_t raised = saturating_inc(bin);
+        r.bins[index] = static_cast<uint8_t>(raised);
+        gained = add_increase(raised, bin, gained);
+        reached |= excess(raised, r.below_threshold);
+        ++cast;
+    });
     *saturated += cast - gained;
     return reached != 0;
 }
 
 // The highest bin of the votes and its first index in *best_index (only read).
 uint32_t best_of_votes(const Votes& v, uint32_t* best_index) {
-    const VoteRun& r = v.run;
     uint32_t best = 0;
-    for (int32_t k = 0; k < 2; ++k) {
-        const uint32_t* cs = r.cos_sin_q14 + v.runs[k][0];
-        const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
-        for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
-             ++cs, row += r.n_rho) {
-            const uint32_t index = bin_index(r, cs, row);
-            if (r.bins[index] > best) {
-                best = r.bins[index];
-                *best_index = index;
-            }
+    for_each_bin(v, v.run, [&](uint32_t index) {
+        if (v.run.bins[index] > best) {
+            best = v.run.bins[index];
+            *best_index = index;
         }
-    }
+    });
     return best;
 }
 
 // −1 on each bin (not below 0).
 __attribute__((noinline)) void withdraw_votes(const Votes& v) {
     const VoteRun r = v.run;
-    for (int32_t k = 0; k < 2; ++k) {
-        const uint32_t* cs = r.cos_sin_q14 + v.runs[k][0];
-        const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
-        for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
-             ++cs, row += r.n_rho) {
-            const uint32_t index = bin_index(r, cs, row);
-            r.bins[index] = static_cast<uint8_t>(saturating_dec(r.bins[index]));
-        }
-    }
+    for_each_bin(v, r, [&](uint32_t index) {
+        r.bins[index] = static_cast<uint8_t>(saturating_dec(r.bins[index]));
+    });
 }
 
 class Ppht {
