@@ -295,10 +295,10 @@ private:
     static int32_t predict(const Track& tr, int32_t major) {
         // |d| < 2^17 (both terms are 1/32 px within a 2048 px frame) and |slope| <= 2^17: a
         // 32 x 32 -> 64-bit product (one SMULL on a Cortex-M).
+        // The product shifted back is below 2^18 and the anchor below 2^17: the rest in 32 bits.
         const int32_t d = major * 32 - tr.anchor_major32;
-        const int64_t minor32 =
-            tr.anchor_minor32 + ((static_cast<int64_t>(d) * tr.slope_q16) >> 16);
-        return static_cast<int32_t>((minor32 + 16) >> 5);
+        const int32_t step32 = static_cast<int32_t>((static_cast<int64_t>(d) * tr.slope_q16) >> 16);
+        return (tr.anchor_minor32 + step32 + 16) >> 5;
     }
 
     // Calls visit(i, off) for each edge point i at (major, minor + off), |off| <= corridor,
