@@ -49,7 +49,7 @@ angle_t atan2_angle(int32_t y, int32_t x) {
     if (top >= 29) {
         const int k = top - 28;
         X >>= k;  // X > 0
-        Y = Y < 0 ? -((-Y) >> k) : Y >> k;
+        Y = shr_toward_zero(Y, k);
     } else if (top < 28) {
         const int k = 28 - top;
         X *= pow2(k);

@@ -81,6 +81,10 @@ constexpr int64_t shr_round_half_away(int64_t v, int n) {
     return n == 0 ? v : v >= 0 ? (v + pow2(n - 1)) >> n : -((-v + pow2(n - 1)) >> n);
 }
 
+// v / 2^n truncated towards zero (as n halvings by C++'s / would give). 0 <= n <= 63,
+// v > INT64_MIN.
+constexpr int64_t shr_toward_zero(int64_t v, int n) { return v < 0 ? -((-v) >> n) : v >> n; }
+
 // num / den truncated towards zero (C++'s /) for 0 < den < 2^16: four 32-by-32-bit divisions of
 // 16-bit digits (one UDIV each on a Cortex-M3/M4, where a 64-bit division is a library call
 // several times longer). Other den: the plain division. |num| <= 2^63 - 1.

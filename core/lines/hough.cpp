@@ -27,9 +27,8 @@ inline int32_t dot_q14(uint32_t xy, uint32_t cs) {
 }
 inline uint32_t saturating_inc(uint32_t bin) { return __uqadd8(bin, 1u); }  // bin <= 255
 inline uint32_t saturating_dec(uint32_t bin) { return __uqsub8(bin, 1u); }
-inline uint32_t excess(uint32_t v, uint32_t floor) {
-    return __uqsub8(v, floor);
-}  // v, floor <= 255
+// v − floor, or 0 when v <= floor (v, floor <= 255)
+inline uint32_t excess(uint32_t v, uint32_t floor) { return __uqsub8(v, floor); }
 // acc + (raised − bin), raised >= bin
 inline uint32_t add_increase(uint32_t raised, uint32_t bin, uint32_t acc) {
     return __usada8(raised, bin, acc);
@@ -71,6 +70,12 @@ struct Votes {
     VoteRun run;
 };
 
+// How many bins the votes touch.
+inline uint32_t vote_count(const Votes& v) {
+    return static_cast<uint32_t>(v.runs[0][1] - v.runs[0][0] + 1) +
+           static_cast<uint32_t>(v.runs[1][1] - v.runs[1][0] + 1);
+}
+
 // Calls visit(index) for each of the votes' bins in θ order; r: a copy of v.run in locals. The
 // bins of θ index t start at t·n_rho.
 template <class Visit>
@@ -88,16 +93,15 @@ inline void for_each_bin(const Votes& v, const VoteRun& r, Visit&& visit) {
 // a bin reached the threshold. Out of line, both runs in one call.
 __attribute__((noinline)) bool cast_votes(const Votes& v, uint32_t* saturated) {
     const VoteRun r = v.run;
-    uint32_t gained = 0, reached = 0, cast = 0;
+    uint32_t gained = 0, reached = 0;
     for_each_bin(v, r, [&](uint32_t index) {
         const uint32_t bin = r.bins[index];
         const uint32_t raised = saturating_inc(bin);
         r.bins[index] = static_cast<uint8_t>(raised);
         gained = add_increase(raised, bin, gained);
         reached |= excess(raised, r.below_threshold);
-        ++cast;
     });
-    *saturated += cast - gained;
+    *saturated += vote_count(v) - gained;
     return reached != 0;
 }
 
@@ -248,8 +252,7 @@ private:
     uint32_t cast(edge_point pt, uint32_t* best_bin) {
         const Votes v = votes_of(pt);
         const bool reached = cast_votes(v, &stats_.saturated_votes);
-        stats_.votes += static_cast<uint32_t>(v.runs[0][1] - v.runs[0][0] + 1) +
-                        static_cast<uint32_t>(v.runs[1][1] - v.runs[1][0] + 1);
+        stats_.votes += vote_count(v);
         return reached ? best_of_votes(v, best_bin) : 0;
     }
 
@@ -294,8 +297,8 @@ private:
     // Predicted minor coordinate (whole pixels) at whole-pixel major coordinate `major`.
     static int32_t predict(const Track& tr, int32_t major) {
         // |d| < 2^17 (both terms are 1/32 px within a 2048 px frame) and |slope| <= 2^17: a
-        // 32 x 32 -> 64-bit product (one SMULL on a Cortex-M).
-        // The product shifted back is below 2^18 and the anchor below 2^17: the rest in 32 bits.
+        // 32 x 32 -> 64-bit product (one SMULL on a Cortex-M), below 2^18 once shifted back,
+        // so with the anchor (below 2^17) the rest is 32-bit.
         const int32_t d = major * 32 - tr.anchor_major32;
         const int32_t step32 = static_cast<int32_t>((static_cast<int64_t>(d) * tr.slope_q16) >> 16);
         return (tr.anchor_minor32 + step32 + 16) >> 5;

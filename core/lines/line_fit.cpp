@@ -15,8 +15,8 @@ bool fit_line(const Moments& m, int32_t anchor_x32, int32_t anchor_y32, FittedLi
     const uint64_t larger = static_cast<uint64_t>(abs64(a) > abs64(b) ? abs64(a) : abs64(b));
     if (larger >= (uint64_t{1} << 30)) {
         const int k = 64 - __builtin_clzll(larger) - 30;
-        a = a < 0 ? -(abs64(a) >> k) : a >> k;
-        b = b < 0 ? -(abs64(b) >> k) : b >> k;
+        a = shr_toward_zero(a, k);
+        b = shr_toward_zero(b, k);
     }
     // Direction angle φ in [0°, 180°): half of the angle of (Sxx − Syy, 2 Sxy).
     const angle_t phi = atan2_angle(static_cast<int32_t>(a), static_cast<int32_t>(b)) / 2;

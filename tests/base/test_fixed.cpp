@@ -42,6 +42,12 @@ TEST_CASE("div_round_half_away for every sign combination", "[fixed]") {
         }
 }
 
+TEST_CASE("shr_toward_zero equals C++'s division by 2^n", "[fixed]") {
+    for (int64_t v = -1000; v <= 1000; ++v)
+        for (int n = 0; n <= 12; ++n) REQUIRE(shr_toward_zero(v, n) == v / pow2(n));
+    REQUIRE(shr_toward_zero(-INT64_MAX, 62) == -INT64_MAX / pow2(62));
+}
+
 TEST_CASE("div_by_small equals C++'s division", "[fixed]") {
     Pcg32 rng(11);
     for (int i = 0; i < 200000; ++i) {
