@@ -1,36 +1,22 @@
-// Integer square roots, bit by bit: shifts, adds and compares only, no division, no float.
+// Integer square roots, exact, in integers only (no float).
 // constexpr, so compile-time capacities (hough.h) and run-time code share one definition.
 #pragma once
 #include <stdint.h>
 
 namespace qt {
 
-namespace detail {
-// Digit-by-digit square root in base 4: `bit` walks down the even powers of two.
-template <typename U>
-constexpr U isqrt_bits(U n, U bit) {
-    U root = 0;
-    while (bit > n) bit >>= 2;
-    while (bit != 0) {
-        if (n >= root + bit) {
-            n -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return root;
-}
-}  // namespace detail
-
-// floor(sqrt(n)) for every 32-bit n: the result r satisfies r*r <= n < (r+1)*(r+1). The first
-// digit is the highest even power of two <= n, found with a count of leading zeros (one CLZ on
-// a Cortex-M3/M4).
+// floor(sqrt(n)) for every 32-bit n: the result r satisfies r*r <= n < (r+1)*(r+1). Newton's
+// iteration x <- (x + n/x) / 2 in integers, from x = 2^ceil(bits/2) >= sqrt(n): it decreases
+// until it reaches floor(sqrt(n)), the first x it does not decrease from (about five steps of
+// one 32-bit division each, one UDIV on a Cortex-M3/M4, where the digits cost sixteen).
 constexpr uint16_t isqrt32(uint32_t n) {
-    return n == 0 ? uint16_t{0}
-                  : static_cast<uint16_t>(detail::isqrt_bits<uint32_t>(
-                        n, uint32_t{1} << ((31 - __builtin_clz(n)) & ~1)));
+    if (n == 0) return 0;
+    uint32_t x = uint32_t{1} << ((33 - __builtin_clz(n)) / 2);  // x <= 2^16: x + n/x < 2^17
+    for (;;) {
+        const uint32_t next = (x + n / x) / 2;
+        if (next >= x) return static_cast<uint16_t>(x);
+        x = next;
+    }
 }
 
 // floor(sqrt(n)) for every 64-bit n; below 2^32 in 32-bit arithmetic (the same digits). Above,

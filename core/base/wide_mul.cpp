@@ -56,25 +56,35 @@ int bit_length(int64_t v) {  // v > 0: the n with 2^(n-1) <= v < 2^n
 Reciprocal reciprocal(int64_t s) {
     QT_PRECONDITION(s > 0);
     const int len = bit_length(s);  // len ∈ [1, 63]
-    const uint64_t d = static_cast<uint64_t>(s);
-    // Restoring division of 2^(len-1+62) by d: rem < d < 2^63 throughout, so 2·rem < 2^64.
-    uint64_t rem = static_cast<uint64_t>(1) << (len - 1);  // 2^(len-1) <= d: first digit 0 or 1
-    uint64_t q = 0;
-    if (rem >= d) {
-        q = 1;
-        rem -= d;
-    }
-    for (int i = 0; i < 62; ++i) {
-        rem <<= 1;
-        q <<= 1;
-        if (rem >= d) {
-            rem -= d;
-            q |= 1u;
+    // m = round_half_up(2^(len+61) / s) = round_half_up(2^125 / d) with d = s·2^(64-len), whose
+    // top bit is set: m = (r + 1) / 2 with r = floor(2^126 / d) ∈ (2^62, 2^63].
+    const uint64_t d = static_cast<uint64_t>(s) << (64 - len);
+    const uint64_t d_lo = d & 0xFFFFFFFFu, d_hi = d >> 32;
+    const uint32_t d_top = static_cast<uint32_t>(d >> 48);  // >= 2^15
+    // Long division of 2^62 · 2^64 by d in base-2^16 digits (Knuth's algorithm D): the
+    // remainder rem < d throughout; each digit is estimated from the remainder's top 32 bits
+    // and d's top 16 (one 32-bit division; the estimate is at most 2 above the digit).
+    uint64_t rem = static_cast<uint64_t>(1) << 62;  // < d: the first digit is 0
+    uint64_t r = 0;
+    for (int k = 0; k < 4; ++k) {
+        // rem·2^16 as a 16-bit top and 64 low bits, minus digit·d.
+        uint32_t digit = static_cast<uint32_t>(rem >> 32) / d_top;
+        if (digit > 0xFFFFu) digit = 0xFFFFu;
+        const uint64_t p_lo = digit * d_lo, p_hi = digit * d_hi;  // each < 2^48
+        const uint64_t low = rem << 16, sub = p_lo + (p_hi << 32);
+        const uint64_t carry = sub < p_lo ? 1u : 0u;
+        int64_t top = static_cast<int64_t>(rem >> 48) - static_cast<int64_t>((p_hi >> 32) + carry) -
+                      (low < sub ? 1 : 0);
+        uint64_t next = low - sub;
+        while (top < 0) {  // the estimate was too big: add d back
+            --digit;
+            next += d;
+            top += next < d ? 1 : 0;
         }
+        rem = next;
+        r = (r << 16) | digit;
     }
-    // q = floor(2^(len+61)/d) <= 2^62; round half up on the next bit.
-    if ((rem << 1) >= d) ++q;
-    return Reciprocal{static_cast<int64_t>(q), len};
+    return Reciprocal{static_cast<int64_t>((r + 1u) >> 1), len};
 }
 
 }  // namespace qt

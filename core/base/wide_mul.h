@@ -13,9 +13,9 @@ int64_t mul_shr_round(int64_t a, int64_t b, int n);
 
 // 1/s for s > 0, as a 62-bit mantissa and an exponent:
 //   m = round_half_up(2^(len+61) / s) ∈ [2^61, 2^62],  1/s = m·2^-(len+61)·(1 ± 2^-62),
-// where s ∈ [2^(len-1), 2^len). One division by shift-and-subtract (62 steps of unsigned
-// compare and subtract; no divide instruction, none of the precision a 32-bit divisor would
-// lose), after which every ratio x/s is a 128-bit product exact to within its last bit.
+// where s ∈ [2^(len-1), 2^len). One long division in 16-bit digits (four 32-bit divisions and
+// their corrections; none of the precision a 32-bit divisor would lose), after which every
+// ratio x/s is a 128-bit product exact to within its last bit.
 struct Reciprocal {
     int64_t m;
     int len;

@@ -139,6 +139,41 @@ int32_t EdgeList::find(int32_t x, int32_t y) const {
                : -1;
 }
 
+int32_t EdgeList::search_and_probe(int32_t x, int32_t y, RowProbe& probe, bool forward) const {
+    // Keys past the largest x are outside too.
+    if (static_cast<uint32_t>(y) >= height_ || static_cast<uint32_t>(x) > ep::kMaxCoordinate)
+        return -1;
+    const uint32_t key = static_cast<uint32_t>(x);
+    const uint32_t row_begin = row_start_[y], row_end = row_start_[y + 1];
+    uint32_t i = 0;
+    bool settled = false;
+    if (probe.y == static_cast<uint32_t>(y)) {
+        // At most kSteps moves from the probe's point, forward or back, then the binary
+        // search: a probe far off costs no more than a few compares on top of find().
+        constexpr uint32_t kSteps = 4;
+        uint32_t steps = 0;
+        i = probe.at;
+        if (i < row_end && x_at(i) < key) {
+            do ++i;
+            while (i < row_end && x_at(i) < key && ++steps < kSteps);
+            settled = i == row_end || x_at(i) >= key;
+        } else {
+            while (i > row_begin && x_at(i - 1) >= key && steps < kSteps) --i, ++steps;
+            settled = i == row_begin || x_at(i - 1) < key;
+        }
+    }
+    if (!settled) i = lower_bound(key, static_cast<uint32_t>(y));
+    // i: the first point at or after key. The probe keeps the pair about key; on a hit, the
+    // pair from the hit on in the expected way.
+    const bool hit = i < row_end && x_at(i) == key;
+    const uint32_t at = hit && forward ? i + 1u : i;
+    probe.y = static_cast<uint16_t>(y);
+    probe.at = static_cast<uint16_t>(at);
+    probe.lo1 = static_cast<uint16_t>(at > row_begin ? x_at(at - 1u) + 1u : 0u);
+    probe.hi = static_cast<uint16_t>(at < row_end ? x_at(at) : ep::kMaxCoordinate + 1u);
+    return hit ? static_cast<int32_t>(i) : -1;
+}
+
 void EdgeList::span(int32_t x_lo, int32_t x_hi, int32_t y, uint32_t* first, uint32_t* end) const {
     *first = *end = 0;
     if (y < 0 || y >= static_cast<int32_t>(height_) || x_hi < 0 || x_hi < x_lo) return;

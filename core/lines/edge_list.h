@@ -55,6 +55,15 @@ constexpr edge_point with_state(edge_point p, uint32_t s) {
 }
 }  // namespace ep
 
+// Two neighbouring points of row y, remembered by EdgeList::find_near: point at − 1 at x =
+// lo1 − 1 (lo1 = 0 when at is the row's first point) and point at at x = hi (hi = 2048 when
+// at is past the row's last point); row y has no point between them.
+struct RowProbe {
+    uint16_t y = 0xFFFFu;  // no row (rows are below 2048)
+    uint16_t lo1 = 0, hi = 0;
+    uint16_t at = 0;
+};
+
 // Non-owning view of an edge list's storage; algorithms take this, so they are compiled once
 // whatever the capacities. Fill it with begin_frame / begin_row / push, in raster order.
 class EdgeList {
@@ -106,33 +115,36 @@ public:
 
     // Index of the point at (x, y), or -1 when there is none (or y is outside the frame).
     int32_t find(int32_t x, int32_t y) const;
-    // The same answer, searched from *hint when *hint lies within row y's indices (a walk along
-    // a row asks for x, x ± 1, ...: a step or two from the last answer instead of a binary
-    // search); then *hint is left at row y's first point with x' >= x, for the next call.
-    // Inline: PPHT calls it three times per step of a walk along x.
-    int32_t find_near(int32_t x, int32_t y, uint32_t* hint) const {
-        if (static_cast<uint32_t>(y) >= height_ || x < 0) return -1;
+    // The same answer, remembering in *probe the two points of row y about x, so that the
+    // next search of that row nearby costs a compare or two: a walk along a row asks for x,
+    // x ± 1, ... of the same few rows. A hit moves the probe on to the next pair of points
+    // that way. forward: the way a search that finds nothing near the probe expects to go on
+    // (larger x when true). A probe serves one filled list: RowProbe{} to begin with, and again
+    // after the list changes. Inline: PPHT calls it
+    // for each row of its corridor at each step of a walk along x.
+    int32_t find_near(int32_t x, int32_t y, RowProbe& probe, bool forward) const {
         const uint32_t key = static_cast<uint32_t>(x);
-        const uint32_t row_begin = row_start_[y], row_end = row_start_[y + 1];
-        uint32_t i = *hint;
-        bool settled = false;
-        if (i >= row_begin && i <= row_end) {
-            // At most kSteps moves, forward or back, then the binary search: a hint far off
-            // costs no more than a few compares on top of find().
-            constexpr uint32_t kSteps = 4;
-            uint32_t steps = 0;
-            if (i < row_end && x_at(i) < key) {
-                do ++i;
-                while (i < row_end && x_at(i) < key && ++steps < kSteps);
-                settled = i == row_end || x_at(i) >= key;
-            } else {
-                while (i > row_begin && x_at(i - 1) >= key && steps < kSteps) --i, ++steps;
-                settled = i == row_begin || x_at(i - 1) < key;
-            }
+        const uint32_t lo = probe.lo1 - 1u, hi = probe.hi;  // lo wraps to 2^32 − 1 for none
+        if (probe.y != static_cast<uint32_t>(y) || key - lo > hi - lo)
+            return search_and_probe(x, y, probe, forward);
+        const uint32_t at = probe.at;
+        if (key == hi) {
+            if (hi > ep::kMaxCoordinate) return -1;
+            // The pair after: this point and the next one.
+            probe.lo1 = static_cast<uint16_t>(hi + 1u);
+            probe.at = static_cast<uint16_t>(at + 1u);
+            const bool next = at + 1u < row_start_[y + 1];
+            probe.hi = static_cast<uint16_t>(next ? x_at(at + 1u) : ep::kMaxCoordinate + 1u);
+            return static_cast<int32_t>(at);
         }
-        if (!settled) i = lower_bound(key, static_cast<uint32_t>(y));
-        *hint = i;
-        return i < row_end && x_at(i) == key ? static_cast<int32_t>(i) : -1;
+        if (key == lo && probe.lo1 != 0) {
+            // The pair before: the point before this one and this one.
+            probe.hi = static_cast<uint16_t>(lo);
+            probe.at = static_cast<uint16_t>(at - 1u);
+            probe.lo1 = static_cast<uint16_t>(at - 1u > row_start_[y] ? x_at(at - 2u) + 1u : 0u);
+            return static_cast<int32_t>(at - 1u);
+        }
+        return -1;
     }
     // Row y's points with x_lo <= x <= x_hi: indices [*first, *end), empty when y is outside
     // the frame. One search for the span instead of one per pixel.
@@ -140,6 +152,9 @@ public:
 
 private:
     uint32_t x_at(uint32_t i) const { return ep::x(points_[i]); }
+    // find_near when the probe does not answer: a few steps from its point when it is of row
+    // y, else a binary search; then the probe remembers what was found.
+    int32_t search_and_probe(int32_t x, int32_t y, RowProbe& probe, bool forward) const;
     // Index of row y's first point with x >= key (row_start_[y + 1] when none); y in frame.
     uint32_t lower_bound(uint32_t key, uint32_t y) const;
     // Raises floor_ until at most 3/4 of the capacity is left and removes the points below it.

@@ -20,10 +20,11 @@ int rho_shift_of(uint16_t rho_step) {
 // The voting arithmetic, one instruction each where the Cortex-M4's SIMD extension has it, the
 // same values in plain C elsewhere (bit for bit: the tests compare the two).
 #if defined(__ARM_FEATURE_SIMD32)
-// x·cos θ + y·sin θ for a point packed as x in the low 16 bits and y in the high (signed) and
-// a cos_sin_q14 entry (|x|, |y| <= 1024 and |cos|, |sin| <= 2^14: no overflow).
-inline int32_t dot_q14(uint32_t xy, uint32_t cs) {
-    return __smuad(static_cast<int16x2_t>(xy), static_cast<int16x2_t>(cs));
+// x·cos θ + y·sin θ + bias for a point packed as x in the low 16 bits and y in the high
+// (signed) and a cos_sin_q14 entry (|x|, |y| <= 1024, |cos|, |sin| <= 2^14 and |bias| < 2^28:
+// no overflow).
+inline int32_t dot_q14_plus(uint32_t xy, uint32_t cs, int32_t bias) {
+    return __smlad(static_cast<int16x2_t>(xy), static_cast<int16x2_t>(cs), bias);
 }
 inline uint32_t saturating_inc(uint32_t bin) { return __uqadd8(bin, 1u); }  // bin <= 255
 inline uint32_t saturating_dec(uint32_t bin) { return __uqsub8(bin, 1u); }
@@ -34,9 +35,9 @@ inline uint32_t add_increase(uint32_t raised, uint32_t bin, uint32_t acc) {
     return __usada8(raised, bin, acc);
 }
 #else
-inline int32_t dot_q14(uint32_t xy, uint32_t cs) {
+inline int32_t dot_q14_plus(uint32_t xy, uint32_t cs, int32_t bias) {
     return static_cast<int16_t>(xy & 0xFFFFu) * static_cast<int16_t>(cs & 0xFFFFu) +
-           static_cast<int16_t>(xy >> 16) * static_cast<int16_t>(cs >> 16);
+           static_cast<int16_t>(xy >> 16) * static_cast<int16_t>(cs >> 16) + bias;
 }
 inline uint32_t saturating_inc(uint32_t bin) { return bin + (bin < 255u); }
 inline uint32_t saturating_dec(uint32_t bin) { return bin - (bin > 0u); }
@@ -85,7 +86,7 @@ inline void for_each_bin(const Votes& v, const VoteRun& r, Visit&& visit) {
         const uint32_t* const cs_end = r.cos_sin_q14 + v.runs[k][1] + 1;
         for (uint32_t row = static_cast<uint32_t>(v.runs[k][0]) * r.n_rho; cs < cs_end;
              ++cs, row += r.n_rho)
-            visit(row + static_cast<uint32_t>((dot_q14(r.xy, *cs) + r.bias) >> r.shift));
+            visit(row + static_cast<uint32_t>(dot_q14_plus(r.xy, *cs, r.bias) >> r.shift));
     }
 }
 
@@ -265,6 +266,7 @@ private:
         uint32_t normal_axis;  // the line normal as a direction bin modulo 8 (22.5° steps)
         int32_t anchor_major32, anchor_minor32;
         int32_t slope_q16;  // d minor / d major
+        bool forward;       // the walk goes to larger major coordinates
     };
 
     static int32_t major_of(const Track& tr, int32_t x, int32_t y) { return tr.major_is_y ? y : x; }
@@ -321,7 +323,8 @@ private:
         }
         for (int32_t off = -corridor; off <= corridor; ++off) {
             const int32_t y = minor + off;
-            const int32_t i = edges_.find_near(major, y, &row_hint_[static_cast<uint32_t>(y) & 7u]);
+            const int32_t i =
+                edges_.find_near(major, y, row_probe_[static_cast<uint32_t>(y) & 7u], tr.forward);
             if (i >= 0 && across(tr, edges_[static_cast<uint16_t>(i)]))
                 visit(static_cast<uint16_t>(i), off);
         }
@@ -529,6 +532,7 @@ private:
                 refit(tr, m, sx32, sy32);
             }
             const int32_t step = way == 0 ? 1 : -1;
+            tr.forward = way == 0;
             seed_run.begin[pass] = seed_run.end[pass] = held_count_;
             int32_t gap = 0;
             int32_t run = 0, run_gap = 0;  // hits of the run not yet in the segment, its gap
@@ -639,9 +643,9 @@ private:
     int32_t rho_half_;
     uint32_t n_rho_;
     int32_t window_ = -1;  // θ bins either side of the gradient's; -1 = vote every θ
-    // Where the last search in row y (keyed y mod 8) ended: a walk along x asks the same few
-    // rows for consecutive columns (see EdgeList::find_near). Any value is safe.
-    mutable uint32_t row_hint_[8] = {};
+    // What the last search in row y (keyed y mod 8) found: a walk along x asks the same few
+    // rows for consecutive columns (see EdgeList::find_near).
+    mutable RowProbe row_probe_[8];
     // The points the current walk found and did not find consumed, to consume them when the
     // segment is kept (see hold()).
     uint16_t* held_;

@@ -102,6 +102,32 @@ TEST_CASE("add_sat and neg_sat saturate instead of overflowing", "[fixed]") {
     REQUIRE(q16_16::from_ratio(-9, 4).round_int() == -2);
 }
 
+TEST_CASE("reciprocal is 2^(len+61)/s rounded half up, against __int128", "[fixed]") {
+    Pcg32 rng(11);
+    auto check = [](int64_t s) {
+        const int len = 64 - __builtin_clzll(static_cast<uint64_t>(s));
+        const unsigned __int128 n = static_cast<unsigned __int128>(1) << (len + 61);
+        const unsigned __int128 q = n / static_cast<unsigned __int128>(s),
+                                rem = n % static_cast<unsigned __int128>(s);
+        const int64_t want = static_cast<int64_t>(q + (2 * rem >= static_cast<uint64_t>(s)));
+        INFO("s = " << s);
+        const Reciprocal got = reciprocal(s);
+        REQUIRE(got.len == len);
+        REQUIRE(got.m == want);
+    };
+    for (int bits = 1; bits <= 63; ++bits) {  // powers of two and their neighbours
+        const int64_t p = static_cast<int64_t>((static_cast<uint64_t>(1) << bits) - 1u);
+        check(p);
+        if (p > 1) check(p - 1);
+        if (bits < 63) check(p + 1), check(p + 2);
+    }
+    for (int i = 0; i < 300000; ++i) {
+        const int bits = 1 + static_cast<int>(rng.below(63));
+        const uint64_t v = (static_cast<uint64_t>(rng.next()) << 32 | rng.next()) >> (64 - bits);
+        check(v == 0 ? 1 : static_cast<int64_t>(v));
+    }
+}
+
 TEST_CASE("wide 64x64 products round half away and saturate, against __int128", "[fixed]") {
     Pcg32 rng(7);
     for (int i = 0; i < 200000; ++i) {

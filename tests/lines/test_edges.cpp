@@ -121,16 +121,23 @@ TEST_CASE("edge list lookups agree with a brute-force search, and capacity overf
                 REQUIRE(ep::y(list[static_cast<uint16_t>(i)]) == static_cast<uint32_t>(y));
             }
         }
-    // find_near gives find's answer from any hint: walks either way along a row (the hint
-    // carried from call to call, as PPHT does), and hints anywhere in the list or past it.
+    // find_near gives find's answer whatever its probe remembers: walks either way along a row
+    // (the probe carried from call to call, as PPHT does), jumps, and probes of other rows.
+    RowProbe other_row;
     for (int y = -1; y <= 40; ++y) {
-        uint32_t hint = 0;
-        for (int x = -1; x <= 50; ++x) REQUIRE(list.find_near(x, y, &hint) == list.find(x, y));
-        for (int x = 50; x >= -1; --x) REQUIRE(list.find_near(x, y, &hint) == list.find(x, y));
-        for (int k = 0; k < 200; ++k) {
-            const int x = static_cast<int>(rng.below(52)) - 1;
-            uint32_t any = rng.below(list.size() + 10u);
-            REQUIRE(list.find_near(x, y, &any) == list.find(x, y));
+        RowProbe probe;
+        for (int x = -1; x <= 50; ++x)
+            REQUIRE(list.find_near(x, y, probe, true) == list.find(x, y));
+        for (int x = 50; x >= -1; --x)
+            REQUIRE(list.find_near(x, y, probe, false) == list.find(x, y));
+        for (int x = -1; x <= 50; ++x)  // against the walk the probe expects
+            REQUIRE(list.find_near(x, y, probe, false) == list.find(x, y));
+        for (int k = 0; k < 400; ++k) {
+            const int x = static_cast<int>(rng.below(k % 4 == 0 ? 2100 : 52)) - 1;
+            const bool forward = rng.below(2) == 0;
+            REQUIRE(list.find_near(x, y, probe, forward) == list.find(x, y));
+            const int y2 = static_cast<int>(rng.below(42)) - 1;  // any row, one probe for all
+            REQUIRE(list.find_near(x, y2, other_row, forward) == list.find(x, y2));
         }
     }
     // Fill past the capacity.
