@@ -65,11 +65,6 @@ bool rule_aspect(const q16_16 sides[4], const QuadParams& p) {
     return w_tol >= aspect_h && w <= aspect_tol_h;
 }
 
-int64_t signed_distance(const Segment& line, SinCos n, int64_t x, int64_t y) {
-    // Each product below 2^30 · 2^30: the sum fits easily.
-    return shr_round_half_away(x * n.cos.raw + y * n.sin.raw, 30) - wide(line.rho);
-}
-
 bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], const SinCos normals[4],
                    const QuadParams& p) {
     if (p.contrast == Contrast::any) return true;

@@ -91,8 +91,12 @@ bool rule_contrast(const Point16 corners[4], const Segment* const sides[4], cons
 
 // Signed distance of the point (x, y) (q16_16 raw, |x|, |y| <= 16384 px) from `line`, whose
 // normal `normal` = sin_cos(line.theta) the caller computes once: n·p − rho, pixels, q16_16
-// raw, positive on the +normal side.
-int64_t signed_distance(const Segment& line, SinCos normal, int64_t x, int64_t y);
+// raw, positive on the +normal side. Inline: the support of each candidate side asks it of
+// every line's ends.
+inline int64_t signed_distance(const Segment& line, SinCos normal, int64_t x, int64_t y) {
+    // Each product below 2^30 · 2^30: the sum fits easily.
+    return shr_round_half_away(x * normal.cos.raw + y * normal.sin.raw, 30) - line.rho.raw;
+}
 
 // Where two lines (rho, theta of their normals) cross, pixels. False when they are closer to
 // parallel than ~0.06° (|sin| < 2^-10) or the crossing lies beyond ±16384 px.
