@@ -19,10 +19,10 @@ constexpr uint16_t isqrt32(uint32_t n) {
     }
 }
 
-// floor(sqrt(n)) for every 64-bit n; below 2^32 in 32-bit arithmetic (the same digits). Above,
-// the root's high bits are those of the root of n's top 32 bits (from an even shift 2h):
-// r0·2^h <= sqrt(n) < (r0 + 1)·2^h; its h low bits follow one by one, each kept when the
-// square stays within n (a 32 x 32 -> 64-bit product: the root is below 2^32).
+// floor(sqrt(n)) for every 64-bit n; below 2^32, isqrt32. Above, the root's high bits are
+// those of the root of n's top 32 bits (from an even shift 2h): r0·2^h <= sqrt(n) <
+// (r0 + 1)·2^h; its h low bits follow one by one, each kept when the square stays within n
+// (a 32 x 32 -> 64-bit product: the root is below 2^32).
 constexpr uint32_t isqrt64(uint64_t n) {
     if ((n >> 32) == 0) return isqrt32(static_cast<uint32_t>(n));
     const int h = (65 - __builtin_clzll(n) - 32) / 2;  // n >> 2h < 2^32

@@ -117,11 +117,11 @@ public:
     int32_t find(int32_t x, int32_t y) const;
     // The same answer, remembering in *probe the two points of row y about x, so that the
     // next search of that row nearby costs a compare or two: a walk along a row asks for x,
-    // x ± 1, ... of the same few rows. A hit moves the probe on to the next pair of points
-    // that way. forward: the way a search that finds nothing near the probe expects to go on
-    // (larger x when true). A probe serves one filled list: RowProbe{} to begin with, and again
-    // after the list changes. Inline: PPHT calls it
-    // for each row of its corridor at each step of a walk along x.
+    // x ± 1, ... of the same few rows. A hit moves the probe on to the next pair of points the
+    // way the walk goes; forward: the walk's way when the probe cannot answer (larger x when
+    // true). A probe serves one filled list: RowProbe{} to begin with, and again after the
+    // list changes. Inline: PPHT calls it for each row of its corridor at each step of a walk
+    // along x.
     int32_t find_near(int32_t x, int32_t y, RowProbe& probe, bool forward) const {
         const uint32_t key = static_cast<uint32_t>(x);
         const uint32_t lo = probe.lo1 - 1u, hi = probe.hi;  // lo wraps to 2^32 − 1 for none
