@@ -62,24 +62,8 @@ NccScore ncc_q15(const uint8_t* a, uint32_t a_stride, const uint8_t* b, uint32_t
     s.n = uint32_t{w} * h;
     if (s.n == 0 || s.n > kNccMaxPixels) return {0, true};
     // 32-bit sums: n <= 1024 bounds them by 2^18 and 2^26 (header).
-    for (uint16_t y = 0; y < h; ++y) {
-        const uint8_t* ra = a + size_t{y} * a_stride;
-        const uint8_t* rb = b + size_t{y} * b_stride;
-        uint32_t sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-        for (uint16_t x = 0; x < w; ++x) {
-            const uint32_t va = ra[x], vb = rb[x];
-            sa += va;
-            sb += vb;
-            saa += va * va;
-            sbb += vb * vb;
-            sab += va * vb;
-        }
-        s.sa += sa;
-        s.sb += sb;
-        s.saa += saa;
-        s.sbb += sbb;
-        s.sab += sab;
-    }
+    for (uint16_t y = 0; y < h; ++y)
+        ncc_add_row<true>(a + size_t{y} * a_stride, b + size_t{y} * b_stride, w, s);
     return ncc_from_sums(s, min_variance);
 }
 

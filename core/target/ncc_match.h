@@ -12,6 +12,11 @@
 // 1 of round(32768·ncc).
 #pragma once
 #include <stdint.h>
+#include <string.h>
+
+#if defined(__ARM_FEATURE_SIMD32)
+#include <arm_acle.h>
+#endif
 
 #include "target/feature.h"
 
@@ -36,6 +41,77 @@ struct NccSums {
     uint32_t n = 0;  // pixels, <= kNccMaxPixels
     uint32_t sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
 };
+
+// Σ a[i]·b[i] over n <= kNccMaxPixels bytes (below 2^27).
+inline uint32_t dot_bytes(const uint8_t* a, const uint8_t* b, uint32_t n) {
+    uint32_t i = 0;
+    uint32_t d = 0;
+#if defined(__ARM_FEATURE_SIMD32)
+    // Four bytes a step (see ncc_add_row below).
+    int32_t acc = 0;
+    for (; i + 4u <= n; i += 4u) {
+        uint32_t a4, b4;
+        memcpy(&a4, a + i, 4);
+        memcpy(&b4, b + i, 4);
+        acc = __smlad(static_cast<int16x2_t>(__uxtb16(a4)), static_cast<int16x2_t>(__uxtb16(b4)),
+                      acc);
+        acc = __smlad(static_cast<int16x2_t>(__uxtb16((a4 >> 8) | (a4 << 24))),
+                      static_cast<int16x2_t>(__uxtb16((b4 >> 8) | (b4 << 24))), acc);
+    }
+    d = static_cast<uint32_t>(acc);
+#endif
+    for (; i < n; ++i) d += uint32_t{a[i]} * b[i];
+    return d;
+}
+
+// Adds one row of w pixels of blocks a and b to the sums: Σb, Σb², Σab, and with WithA also
+// Σa, Σa² (a template's, summed once by its caller otherwise). n is the caller's.
+template <bool WithA>
+inline void ncc_add_row(const uint8_t* a, const uint8_t* b, uint32_t w, NccSums& s) {
+    uint32_t x = 0;
+#if defined(__ARM_FEATURE_SIMD32)
+    // Four pixels a step on a Cortex-M4: USADA8 adds four bytes, UXTB16 spreads the even and
+    // the odd bytes into halfwords, SMLAD multiplies and adds two pairs. Every sum stays below
+    // 2^31 (header), so the signed accumulations give the loop's values.
+    uint32_t sa = s.sa, sb = s.sb;
+    int32_t saa = static_cast<int32_t>(s.saa), sbb = static_cast<int32_t>(s.sbb),
+            sab = static_cast<int32_t>(s.sab);
+    for (; x + 4u <= w; x += 4u) {
+        uint32_t a4, b4;
+        memcpy(&a4, a + x, 4);
+        memcpy(&b4, b + x, 4);
+        const int16x2_t a_even = static_cast<int16x2_t>(__uxtb16(a4)),
+                        a_odd = static_cast<int16x2_t>(__uxtb16((a4 >> 8) | (a4 << 24)));
+        const int16x2_t b_even = static_cast<int16x2_t>(__uxtb16(b4)),
+                        b_odd = static_cast<int16x2_t>(__uxtb16((b4 >> 8) | (b4 << 24)));
+        if (WithA) {
+            sa = __usada8(a4, 0u, sa);
+            saa = __smlad(a_even, a_even, saa);
+            saa = __smlad(a_odd, a_odd, saa);
+        }
+        sb = __usada8(b4, 0u, sb);
+        sbb = __smlad(b_even, b_even, sbb);
+        sbb = __smlad(b_odd, b_odd, sbb);
+        sab = __smlad(b_even, a_even, sab);
+        sab = __smlad(b_odd, a_odd, sab);
+    }
+    s.sa = sa;
+    s.sb = sb;
+    s.saa = static_cast<uint32_t>(saa);
+    s.sbb = static_cast<uint32_t>(sbb);
+    s.sab = static_cast<uint32_t>(sab);
+#endif
+    for (; x < w; ++x) {
+        const uint32_t va = a[x], vb = b[x];
+        if (WithA) {
+            s.sa += va;
+            s.saa += va * va;
+        }
+        s.sb += vb;
+        s.sbb += vb * vb;
+        s.sab += va * vb;
+    }
+}
 
 // True when n·sum_sq − sum² < n²·min_variance, or == 0 (for any min_variance); n <= kNccMaxPixels.
 bool ncc_flat(uint32_t n, uint32_t sum, uint32_t sum_sq, uint32_t min_variance);
@@ -87,10 +163,7 @@ PatchSums patch_sums(const Feature<R>& f, uint32_t min_variance) {
 }
 template <int R>
 uint32_t patch_dot(const Feature<R>& a, const Feature<R>& b) {
-    uint32_t d = 0;
-    for (int i = 0; i < Feature<R>::kSide * Feature<R>::kSide; ++i)
-        d += uint32_t{a.patch[i]} * b.patch[i];
-    return d;
+    return dot_bytes(a.patch, b.patch, Feature<R>::kSide * Feature<R>::kSide);
 }
 }  // namespace detail
 

@@ -41,16 +41,8 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
         const uint8_t* at = region.pixels + static_cast<uint32_t>(v - region.y0) * region.stride +
                             static_cast<uint32_t>(u - region.x0);
         NccSums s = t;
-        for (uint8_t y = 0; y < th; ++y) {
-            const uint8_t* rt = tpl + uint32_t{y} * tw;
-            const uint8_t* rb = at + uint32_t{y} * region.stride;
-            for (uint8_t x = 0; x < tw; ++x) {
-                const uint32_t b = rb[x];
-                s.sb += b;
-                s.sbb += b * b;
-                s.sab += b * rt[x];
-            }
-        }
+        for (uint8_t y = 0; y < th; ++y)
+            ncc_add_row<false>(tpl + uint32_t{y} * tw, at + uint32_t{y} * region.stride, tw, s);
         return static_cast<int32_t>(ncc_from_sums(s).q15);
     };
     int32_t best = INT32_MIN, bu = 0, bv = 0;
