@@ -75,7 +75,7 @@ class HarrisDetector {
     // bounds its numerator and is multiplied by 128: 20·128·kS² must fit.
     static_assert(WindowRadius >= 1 && WindowRadius <= 7, "windows of 3x3 .. 15x15 pixels");
     static constexpr int64_t kS = int64_t{2 * WindowRadius + 1} * (2 * WindowRadius + 1) * 65025;
-    static_assert(kS < (int64_t{1} << 31), "column and window sums fit int32");
+    static_assert(25 * kS < (int64_t{1} << 31), "sums, and 25·Sxx for the response, fit int32");
     static_assert(kS * kS < INT64_MAX / 2560, "responses and the sub-pixel step fit int64");
 
 public:
@@ -271,9 +271,12 @@ private:
             sxx += col_xx_[x + V];
             sxy += col_xy_[x + V];
             syy += col_yy_[x + V];
-            const int64_t det = int64_t{sxx} * syy - int64_t{sxy} * sxy;
-            const int64_t trace = int64_t{sxx} + syy;
-            out[x] = 25 * det - trace * trace;
+            // 25·det − trace² as (25·Sxx)·Syy − (5·Sxy)² − (Sxx + Syy)²: every factor fits 32
+            // bits (25·kS < 2^31), so three 32 × 32 → 64-bit products (SMULL, UMULL on a
+            // Cortex-M) and the same integer.
+            const uint32_t trace = static_cast<uint32_t>(sxx) + static_cast<uint32_t>(syy);
+            out[x] = int64_t{25 * sxx} * syy - int64_t{5 * sxy} * (5 * sxy) -
+                     static_cast<int64_t>(uint64_t{trace} * trace);
             sxx -= col_xx_[x - V];
             sxy -= col_xy_[x - V];
             syy -= col_yy_[x - V];
