@@ -90,9 +90,9 @@ inline void for_each_bin(const Votes& v, const VoteRun& r, Visit&& visit) {
     }
 }
 
-// +1 on each bin (saturating at 255: the votes lost are added to *saturated); returns whether
-// a bin reached the threshold. Out of line, both runs in one call.
-__attribute__((noinline)) bool cast_votes(const Votes& v, uint32_t* saturated) {
+// +1 on each bin (saturating at 255), counted in stats (votes, and the votes a bin at 255 lost);
+// returns whether a bin reached the threshold. Out of line, both runs in one call.
+__attribute__((noinline)) bool cast_votes(const Votes& v, HoughStats* stats) {
     const VoteRun r = v.run;
     uint32_t gained = 0, reached = 0;
     for_each_bin(v, r, [&](uint32_t index) {
@@ -102,7 +102,9 @@ __attribute__((noinline)) bool cast_votes(const Votes& v, uint32_t* saturated) {
         gained = add_increase(raised, bin, gained);
         reached |= excess(raised, r.below_threshold);
     });
-    *saturated += vote_count(v) - gained;
+    const uint32_t votes = vote_count(v);
+    stats->votes += votes;
+    stats->saturated_votes += votes - gained;
     return reached != 0;
 }
 
@@ -252,9 +254,7 @@ private:
     // with its index (θ index · rho bins + rho index; the first of equals) in *best_bin, else 0.
     uint32_t cast(edge_point pt, uint32_t* best_bin) {
         const Votes v = votes_of(pt);
-        const bool reached = cast_votes(v, &stats_.saturated_votes);
-        stats_.votes += vote_count(v);
-        return reached ? best_of_votes(v, best_bin) : 0;
+        return cast_votes(v, &stats_) ? best_of_votes(v, best_bin) : 0;
     }
 
     // Withdraws the point's votes.

@@ -49,7 +49,7 @@ struct HoughWorkspace {
     uint8_t* bins;  // theta_bins × rho bins counters
     uint32_t bin_capacity;
     uint32_t* cos_sin_q14;  // per θ bin: cos in the low 16 bits, sin in the high, signed,
-                            // 1.0 = 2^14 (one load, and one SMUAD on a Cortex-M4, per vote)
+                            // 1.0 = 2^14 (one load, and one SMLAD on a Cortex-M4, per vote)
     uint16_t theta_capacity;
     uint16_t* table_bins;  // theta_bins the tables hold (0: not filled): a frame with the same
                            // theta_bins as the last one reuses them (90 CORDIC runs saved)

@@ -42,22 +42,37 @@ struct NccSums {
     uint32_t sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
 };
 
+#if defined(__ARM_FEATURE_SIMD32)
+namespace detail {
+// Four bytes as two pairs of halfwords, bytes 0 and 2 (even) and bytes 1 and 3 (odd): one
+// UXTB16 each, the odd one with its ROR 8 folded in. `four` keeps the bytes as loaded.
+struct BytePairs {
+    uint32_t four;
+    int16x2_t even, odd;
+};
+inline BytePairs byte_pairs(const uint8_t* p) {
+    BytePairs b;
+    memcpy(&b.four, p, 4);
+    b.even = static_cast<int16x2_t>(__uxtb16(b.four));
+    b.odd = static_cast<int16x2_t>(__uxtb16((b.four >> 8) | (b.four << 24)));
+    return b;
+}
+// acc + the four products of a's and b's bytes: two SMLAD.
+inline int32_t add_products(const BytePairs& a, const BytePairs& b, int32_t acc) {
+    return __smlad(a.odd, b.odd, __smlad(a.even, b.even, acc));
+}
+}  // namespace detail
+#endif
+
 // Σ a[i]·b[i] over n <= kNccMaxPixels bytes (below 2^27).
 inline uint32_t dot_bytes(const uint8_t* a, const uint8_t* b, uint32_t n) {
     uint32_t i = 0;
     uint32_t d = 0;
 #if defined(__ARM_FEATURE_SIMD32)
-    // Four bytes a step (see ncc_add_row below).
+    // Four bytes a step on a Cortex-M4 (the sum stays below 2^31: the loop's value).
     int32_t acc = 0;
-    for (; i + 4u <= n; i += 4u) {
-        uint32_t a4, b4;
-        memcpy(&a4, a + i, 4);
-        memcpy(&b4, b + i, 4);
-        acc = __smlad(static_cast<int16x2_t>(__uxtb16(a4)), static_cast<int16x2_t>(__uxtb16(b4)),
-                      acc);
-        acc = __smlad(static_cast<int16x2_t>(__uxtb16((a4 >> 8) | (a4 << 24))),
-                      static_cast<int16x2_t>(__uxtb16((b4 >> 8) | (b4 << 24))), acc);
-    }
+    for (; i + 4u <= n; i += 4u)
+        acc = detail::add_products(detail::byte_pairs(a + i), detail::byte_pairs(b + i), acc);
     d = static_cast<uint32_t>(acc);
 #endif
     for (; i < n; ++i) d += uint32_t{a[i]} * b[i];
@@ -70,30 +85,21 @@ template <bool WithA>
 inline void ncc_add_row(const uint8_t* a, const uint8_t* b, uint32_t w, NccSums& s) {
     uint32_t x = 0;
 #if defined(__ARM_FEATURE_SIMD32)
-    // Four pixels a step on a Cortex-M4: USADA8 adds four bytes, UXTB16 spreads the even and
-    // the odd bytes into halfwords, SMLAD multiplies and adds two pairs. Every sum stays below
-    // 2^31 (header), so the signed accumulations give the loop's values.
+    // Four pixels a step on a Cortex-M4: USADA8 adds four bytes, SMLAD multiplies and adds
+    // two pairs. Every sum stays below 2^31 (header), so the signed accumulations give the
+    // loop's values.
     uint32_t sa = s.sa, sb = s.sb;
     int32_t saa = static_cast<int32_t>(s.saa), sbb = static_cast<int32_t>(s.sbb),
             sab = static_cast<int32_t>(s.sab);
     for (; x + 4u <= w; x += 4u) {
-        uint32_t a4, b4;
-        memcpy(&a4, a + x, 4);
-        memcpy(&b4, b + x, 4);
-        const int16x2_t a_even = static_cast<int16x2_t>(__uxtb16(a4)),
-                        a_odd = static_cast<int16x2_t>(__uxtb16((a4 >> 8) | (a4 << 24)));
-        const int16x2_t b_even = static_cast<int16x2_t>(__uxtb16(b4)),
-                        b_odd = static_cast<int16x2_t>(__uxtb16((b4 >> 8) | (b4 << 24)));
+        const detail::BytePairs pa = detail::byte_pairs(a + x), pb = detail::byte_pairs(b + x);
         if (WithA) {
-            sa = __usada8(a4, 0u, sa);
-            saa = __smlad(a_even, a_even, saa);
-            saa = __smlad(a_odd, a_odd, saa);
+            sa = __usada8(pa.four, 0u, sa);
+            saa = detail::add_products(pa, pa, saa);
         }
-        sb = __usada8(b4, 0u, sb);
-        sbb = __smlad(b_even, b_even, sbb);
-        sbb = __smlad(b_odd, b_odd, sbb);
-        sab = __smlad(b_even, a_even, sab);
-        sab = __smlad(b_odd, a_odd, sab);
+        sb = __usada8(pb.four, 0u, sb);
+        sbb = detail::add_products(pb, pb, sbb);
+        sab = detail::add_products(pb, pa, sab);
     }
     s.sa = sa;
     s.sb = sb;
