@@ -39,6 +39,10 @@
 #                  III's reset), the paper's version of each of the project's choices (D_rep,
 #                  search region, morphological detection, formulation); error tables and SVG
 #                  charts in bench_out/target, Fig. 12 (with and without the reset) among them
+#   footage-host   the target tracker on real footage (OpenCV's vtest.avi, opencv-doc, at 384x288)
+#                  against hand-marked truth (vectors/footage): frames within 10 px, identity
+#                  switches, re-acquisition after occlusions, time, beside OpenCV's CSRT and KCF;
+#                  a chart of the error over time a walker in bench_out/footage
 #   soak           the quadrangle tracker (10^6 generated frames, 30 % of sides missed, bursts of
 #                  total loss) and the target tracker (10^5 frames of spells out of view) on seeds
 #                  1-3, built with ASan + UBSan (host-sanitize): recovery, covariance, lost events;
@@ -56,13 +60,14 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table track-m4 hdl-latency hdl-soak fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table track-m4 hdl-latency hdl-soak fpga fuzz)
 
 # The host benches compare with OpenCV in the same run: its development packages are installed
 # here (never by the test command; the runtime never links it), and the configure step fails
 # rather than print a table without its comparison rows.
 host_build() {
-    ensure_packages cmake make g++ catch2 iverilog libopencv-imgproc-dev libopencv-calib3d-dev
+    ensure_packages cmake make g++ catch2 iverilog libopencv-imgproc-dev libopencv-calib3d-dev \
+        libopencv-contrib-dev
     cmake --preset host -DQT_REQUIRE_OPENCV=ON >/dev/null
     cmake --build --preset host -j"$jobs" --target "$@" >/dev/null
 }
@@ -130,6 +135,15 @@ stream_pipes() {
     rm -rf "$d"
 }
 
+# OpenCV's vtest.avi (opencv-doc, 768x576, 10 fps) as the 384x288 grey Y4M the truth in
+# vectors/footage was marked on (ffmpeg's default bicubic scaler).
+footage_video() {
+    [ -s "$1" ] && return 0
+    mkdir -p "$(dirname "$1")"
+    ffmpeg -loglevel error -y -i /usr/share/doc/opencv-doc/examples/data/vtest.avi \
+        -vf scale=384:288 -f yuv4mpegpipe -pix_fmt gray "$1"
+}
+
 # Runs one bench, printing its figures.
 run_bench() {
     local b=build/host/platform/bench
@@ -167,6 +181,14 @@ run_bench() {
         target-host)
             host_build bench_target
             "$b/bench_target" --out bench_out/target ;;
+        footage-host)
+            ensure_packages opencv-doc ffmpeg
+            host_build bench_footage
+            footage_video build/host/footage/vtest_384x288.y4m
+            rm -rf bench_out/footage && mkdir -p bench_out/footage
+            # shellcheck disable=SC2046  # one word per truth file
+            "$b/bench_footage" build/host/footage/vtest_384x288.y4m --out bench_out/footage \
+                $(ls vectors/footage/vtest_T*.txt | grep -v '\.second\.txt$' | sort -V) ;;
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench 2>&1 ;;
         budgets)
@@ -222,7 +244,7 @@ doc_of() {
         quads-host|photos-host) echo docs/quadrangles.md ;;
         track-host|track-m4) echo docs/tracking.md ;;
         streams-host) echo docs/cli.md ;;
-        homography-host|target-host) echo docs/target.md ;;
+        homography-host|target-host|footage-host) echo docs/target.md ;;
         budgets|budgets-m3|budgets-m4f|target-m4f|budget-table) echo docs/firmware.md ;;
         soak|fuzz) echo docs/robustness.md ;;
     esac

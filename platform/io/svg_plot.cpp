@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -102,14 +103,26 @@ std::string render(const LinePlot& p) {
     for (std::size_t i = 0; i < p.series.size(); ++i) {
         const PlotSeries& ser = p.series[i];
         const char* colour = kColours[i % (sizeof kColours / sizeof kColours[0])];
+        // One polyline per run of values; a NaN leaves a gap (no value there).
         std::string pts;
-        for (std::size_t k = 0; k < p.x.size(); ++k)
-            pts += (k ? " " : "") + num(sx(p.x[k])) + "," + num(sy(ser.y[k]));
-        s += "<polyline fill=\"none\" stroke=\"" + std::string(colour) +
-             "\" stroke-width=\"2\" points=\"" + pts + "\"/>\n";
+        auto flush = [&] {
+            if (!pts.empty())
+                s += "<polyline fill=\"none\" stroke=\"" + std::string(colour) +
+                     "\" stroke-width=\"2\" points=\"" + pts + "\"/>\n";
+            pts.clear();
+        };
+        for (std::size_t k = 0; k < p.x.size(); ++k) {
+            if (std::isnan(ser.y[k])) {
+                flush();
+                continue;
+            }
+            pts += (pts.empty() ? "" : " ") + num(sx(p.x[k])) + "," + num(sy(ser.y[k]));
+        }
+        flush();
         for (std::size_t k = 0; p.markers && k < p.x.size(); ++k)
-            s += "<circle cx=\"" + num(sx(p.x[k])) + "\" cy=\"" + num(sy(ser.y[k])) +
-                 "\" r=\"2.5\" fill=\"" + colour + "\"/>\n";
+            if (!std::isnan(ser.y[k]))
+                s += "<circle cx=\"" + num(sx(p.x[k])) + "\" cy=\"" + num(sy(ser.y[k])) +
+                     "\" r=\"2.5\" fill=\"" + colour + "\"/>\n";
         const double ly = kTop + 10 + 22 * static_cast<double>(i);
         s += line(kLegendX, ly, kLegendX + 24, ly, colour, 3);
         s += text(kLegendX + 30, ly + 4, ser.name, "start", 13);

@@ -14,7 +14,7 @@ struct PlotTick {
 
 struct PlotSeries {
     std::string name;       // legend text
-    std::vector<double> y;  // one per LinePlot::x; values outside 0..y_max are clipped
+    std::vector<double> y;  // one per LinePlot::x; values outside 0..y_max are clipped; NaN: a gap
 };
 
 struct PlotSpan {
