@@ -388,18 +388,20 @@ int main(int argc, char** argv) {
     };
     std::vector<Tracker> trackers = {{"quadtrack", run_quadtrack}};
 #ifdef QT_HAVE_OPENCV_TRACKING
-    if (!only_ours)
+    if (!only_ours) {
         trackers.push_back(
             {"OpenCV CSRT", [](const std::vector<qt::io::GreyImage>& f, const FootageTruth& t,
                                Shift d, const qt::TargetPipelineParams&) {
                  return run_opencv(f, t, d, [] { return cv::TrackerCSRT::create(); });
              }});
-    if (!only_ours)
         trackers.push_back(
             {"OpenCV KCF", [](const std::vector<qt::io::GreyImage>& f, const FootageTruth& t,
                               Shift d, const qt::TargetPipelineParams&) {
                  return run_opencv(f, t, d, [] { return cv::TrackerKCF::create(); });
              }});
+    }
+#else
+    (void)only_ours;  // no OpenCV rows to leave out
 #endif
     const Shift all_shifts[] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     std::vector<Row> rows;
