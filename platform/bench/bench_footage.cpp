@@ -9,12 +9,10 @@
 // target is run from its start box and from the box moved by 1 px left, right, up and down
 // (--starts 1 runs the box alone), and the figures add up over the runs.
 //
-// Per target and tracker: frames with the estimate within --radius of the truth; the median
-// error; identity switches: runs of frames where the tracker claims a measurement (ours:
-// measured or reacquired; OpenCV's: update() true) more than twice the radius from the truth
-// while the walker is in the frame; the frames claimed while the walker is out of the frame;
-// for each occlusion, whether a wrong claim came between its start and the re-acquisition, and
-// the frames from its end until a claim within the radius; the median time a frame.
+// Per target and tracker: frames within --radius of the truth, the median error, identity
+// switches, frames claimed while the walker is out of the frame, occlusions followed by a wrong
+// claim and the re-acquisitions after them (defined in footage_score.h), the median time a
+// frame. A claim: ours `measured` or `reacquired`, OpenCV's update() true.
 // Usage: bench_footage VIDEO.y4m TRUTH.txt... [--radius PX] [--starts N] [--out DIR]
 //                     [--quadtrack-only] [--trace] [-- TARGET FLAGS]
 //   --radius: default 10 px; --starts: start boxes a target, 1..5 (default 5); --out: a chart
@@ -32,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/footage_score.h"
 #include "cli/target_options.h"
 #include "io/image_io.h"
 #include "io/svg_plot.h"
@@ -44,20 +43,12 @@
 
 namespace {
 
+using qt::bench::median;
+using qt::bench::Score;
+using qt::bench::score;
+using qt::bench::Step;
 using qt::scene::FootageTruth;
 using qt::scene::Seen;
-
-// One tracker's output on one frame.
-struct Step {
-    bool tracking = false;      // it gives a position (ours: not lost; OpenCV: update() true)
-    bool claims = false;        // it says it measured the target in this frame
-    double x = 0, y = 0;        // its estimate of the box centre, px
-    double ms = 0;              // time spent on the frame
-    const char* state = "";     // ours: the tracker's state
-    double score = 0, nds = 0;  // ours: the template match's NCC and its D_nds
-    double wx = 0, wy = 0;      // ours: the search window's centre, px
-    int unseen = 0;             // ours: frames since the last accepted measurement
-};
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -133,44 +124,6 @@ std::vector<Step> run_opencv(const std::vector<qt::io::GreyImage>& frames, const
 }
 #endif
 
-double median(std::vector<double> v) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// What a run scores against the truth.
-struct Score {
-    int frames = 0;       // frames where the target is in the frame (visible or occluded)
-    int within = 0;       // ... with the estimate within the radius
-    int switches = 0;     // runs of wrong claims while the walker is in view
-    int claims_out = 0;   // frames claiming a measurement while the walker is out of the frame
-    int occlusions = 0;   // occlusions (runs of occluded frames) inside the span
-    int reacquired = 0;   // ... after which a claim within the radius came
-    int wrong_after = 0;  // ... with a wrong claim between its start and the re-acquisition
-    std::vector<int> reacquire_frames;  // frames from an occlusion's end to that claim
-    std::vector<double> errors, times;  // per frame in view: error, px; per frame: time, ms
-    int runs = 0;
-    int kept = 0;  // runs without a switch
-
-    void add(const Score& o) {
-        frames += o.frames;
-        within += o.within;
-        switches += o.switches;
-        claims_out += o.claims_out;
-        occlusions += o.occlusions;
-        reacquired += o.reacquired;
-        wrong_after += o.wrong_after;
-        reacquire_frames.insert(reacquire_frames.end(), o.reacquire_frames.begin(),
-                                o.reacquire_frames.end());
-        errors.insert(errors.end(), o.errors.begin(), o.errors.end());
-        times.insert(times.end(), o.times.begin(), o.times.end());
-        runs += o.runs;
-        kept += o.kept;
-    }
-};
-
 void trace(const std::vector<Step>& run, const FootageTruth& t, int start_box) {
     for (size_t i = 0; i < run.size(); ++i) {
         const int frame = t.start + static_cast<int>(i);
@@ -185,59 +138,6 @@ void trace(const std::vector<Step>& run, const FootageTruth& t, int start_box) {
                      st.state, st.score, st.nds, st.wx, st.wy, i > 0 ? run[i - 1].unseen : 0,
                      present ? std::hypot(st.x - x, st.y - y) : NAN);
     }
-}
-
-Score score(const std::vector<Step>& run, const FootageTruth& t, double radius) {
-    Score s;
-    s.runs = 1;
-    std::vector<double>& errors = s.errors;
-    std::vector<double>& times = s.times;
-    bool in_wrong = false;
-    bool was_occluded = false, waiting = false, wrong_seen = false;
-    int occlusion_end = 0;
-    for (size_t i = 1; i < run.size(); ++i) {  // frame 0 of the span is the start
-        const Step& st = run[i];
-        times.push_back(st.ms);
-        const int frame = t.start + static_cast<int>(i);
-        double x = 0, y = 0;
-        Seen seen;
-        const bool present = t.at(frame, x, y, seen);
-        const double error = st.tracking ? std::hypot(st.x - x, st.y - y) : INFINITY;
-        // A claim far from the walker in view is on someone or something else; a claim while
-        // the walker is out of the frame is on something else too, counted apart.
-        const bool wrong = st.claims && present && error > 2 * radius;
-        if (wrong && !in_wrong) ++s.switches;
-        in_wrong = wrong;
-        if (st.claims && !present && seen == Seen::out) ++s.claims_out;
-        if (present) {
-            ++s.frames;
-            errors.push_back(error);
-            if (error <= radius) ++s.within;
-        }
-        // Occlusions: from an occlusion's first frame, wrong claims count against it until a
-        // claim within the radius after its last frame re-acquires the target.
-        const bool occluded = present && seen == Seen::occluded;
-        if (occluded && !was_occluded) {
-            ++s.occlusions;
-            waiting = true;
-            wrong_seen = false;
-        }
-        if (!occluded && was_occluded) occlusion_end = frame;
-        was_occluded = occluded;
-        if (waiting) {
-            if (wrong && !wrong_seen) {
-                wrong_seen = true;
-                ++s.wrong_after;
-            }
-            if (!occluded && st.claims && present && error <= radius) {
-                waiting = false;
-                ++s.reacquired;
-                s.reacquire_frames.push_back(frame - occlusion_end);
-            }
-        }
-    }
-    s.kept = s.switches == 0;
-    return s;
 }
 
 // The chart of one target: each tracker's error over the span (from the marked box; no box:
