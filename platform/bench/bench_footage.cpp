@@ -323,6 +323,7 @@ int main(int argc, char** argv) {
             return 1;
         }
         std::vector<std::vector<Step>> first_runs;  // each tracker's run from the marked box
+        std::vector<int> switches;                  // each tracker's, over the runs
         for (size_t k = 0; k < trackers.size(); ++k) {
             Score s;
             for (int i = 0; i < starts; ++i) {
@@ -333,6 +334,7 @@ int main(int argc, char** argv) {
             }
             rows.push_back({t.name, trackers[k].name, s});
             totals[k].add(s);
+            switches.push_back(s.switches);
         }
         if (!out_dir.empty()) {
             std::vector<const char*> names;
@@ -340,9 +342,9 @@ int main(int argc, char** argv) {
             if (!plot_errors(out_dir + "/error_" + t.name + ".svg", t, names, first_runs, radius))
                 return 1;
         }
-        if (trackers.size() > 1 && rows[rows.size() - trackers.size() + 1].s.switches == 0) {
+        if (trackers.size() > 1 && switches[1] == 0) {  // trackers[1]: CSRT
             csrt_kept.push_back(t.name);
-            ours_switches_on_kept += rows[rows.size() - trackers.size()].s.switches;
+            ours_switches_on_kept += switches[0];
         }
     }
     for (size_t k = 0; k < trackers.size(); ++k)

@@ -84,12 +84,10 @@ bool read_footage_truth(const std::string& path, FootageTruth& out, std::string&
             if (!(words >> xs >> ys >> ws >> hs >> state)) return fail("a mark needs 6 fields");
             if (state == "out") {
                 m.seen = Seen::out;
+            } else if (state != "visible" && state != "occluded") {
+                return fail("state '" + state + "' (visible, occluded or out)");
             } else {
-                m.seen = state == "visible"    ? Seen::visible
-                         : state == "occluded" ? Seen::occluded
-                                               : Seen::out;
-                if (state != "visible" && state != "occluded")
-                    return fail("state '" + state + "' (visible, occluded or out)");
+                m.seen = state == "visible" ? Seen::visible : Seen::occluded;
                 try {
                     m.x = std::stod(xs);
                     m.y = std::stod(ys);
