@@ -11,6 +11,7 @@ Status EdgeList::begin_frame(uint16_t height) {
     current_y_ = 0;
     height_ = 0;
     floor_ = 0;
+    thin_below_ = 0;
     if (height == 0 || height > max_rows_) return Status::bad_size;
     height_ = height;
     return Status::ok;
@@ -24,7 +25,8 @@ void EdgeList::begin_row(uint16_t y) {
 
 bool EdgeList::push(uint16_t x, uint32_t dir, int32_t delta16, uint32_t magnitude) {
     if (count_ == capacity_) drop_weakest();
-    if (magnitude < floor_ || count_ == capacity_) {
+    if (magnitude < floor_ || count_ == capacity_ ||
+        (magnitude < thin_below_ && ep::thinned_out(x, current_y_, dir))) {
         ++dropped_;
         return false;
     }
@@ -34,16 +36,30 @@ bool EdgeList::push(uint16_t x, uint32_t dir, int32_t delta16, uint32_t magnitud
 }
 
 void EdgeList::drop_weakest() {
-    // Strengths are magnitude / 2: the floor moves in steps of 2 grey levels.
-    uint16_t histogram[256] = {};
+    // Strengths are magnitude / 2: the floor and the thinning level move in steps of 2 grey
+    // levels. even[s]: the points of strength s on an even step (thinning keeps them).
+    uint16_t histogram[256] = {}, even[256] = {};
     uint32_t top = 0;
-    for (uint32_t i = 0; i < count_; ++i) {
-        ++histogram[strength_[i]];
-        top = strength_[i] > top ? strength_[i] : top;
+    for (uint32_t y = 0; y < next_row_; ++y) {
+        const uint32_t end = y + 1 < next_row_ ? row_start_[y + 1] : count_;
+        for (uint32_t i = row_start_[y]; i < end; ++i) {
+            const uint32_t st = strength_[i];
+            ++histogram[st];
+            even[st] = static_cast<uint16_t>(
+                even[st] + !ep::thinned_out(ep::x(points_[i]), y, ep::dir(points_[i])));
+            top = st > top ? st : top;
+        }
     }
     const uint32_t keep_at_most = capacity_ - capacity_ / 4u;
-    uint32_t kept = 0, s = 256;
-    while (s > 0 && kept + histogram[s - 1] <= keep_at_most) kept += histogram[--s];
+    // whole: the lowest strength whose points, all of them, fill a quarter of what is kept;
+    // s: the lowest from which the even points below `whole` fill the rest. Neither moves
+    // down (no point below the old floor was kept, and none below the old level on an odd
+    // step).
+    uint32_t kept = 0, whole = 256;
+    while (whole > thin_below_ / 2u && kept + histogram[whole - 1] <= keep_at_most / 4u)
+        kept += histogram[--whole];
+    uint32_t s = whole;
+    while (s > floor_ / 2u && kept + even[s - 1] <= keep_at_most) kept += even[--s];
     if (s > top) {
         // The strongest value alone fills more than 3/4: no point can be called weaker than the
         // others. They all stay, the floor rises above them, and push() refuses what follows
@@ -51,9 +67,8 @@ void EdgeList::drop_weakest() {
         floor_ = static_cast<uint16_t>(2u * (top + 1u));
         return;
     }
-    // s: the lowest strength whose points all fit, one step above the old floor at least (the
-    // list is full of points at or above it).
     floor_ = static_cast<uint16_t>(2u * s);
+    thin_below_ = static_cast<uint16_t>(2u * whole);
     // Rows begun so far: 0 .. next_row_ - 1; the last of them runs to count_.
     uint32_t write = 0;
     for (uint32_t y = 0; y < next_row_; ++y) {
@@ -61,7 +76,9 @@ void EdgeList::drop_weakest() {
         const uint32_t begin = row_start_[y];
         row_start_[y] = static_cast<uint16_t>(write);
         for (uint32_t i = begin; i < end; ++i) {
-            if (strength_[i] < s) continue;
+            if (strength_[i] < s || (strength_[i] < whole &&
+                                     ep::thinned_out(ep::x(points_[i]), y, ep::dir(points_[i]))))
+                continue;
             points_[write] = points_[i];
             strength_[write] = strength_[i];
             ++write;

@@ -2,12 +2,20 @@
 // of where each row starts, so that PPHT can both visit points in random order (by list index)
 // and ask "is there an edge at (x, y)?" (binary search within one row) with no bitmap.
 //
-// When the list is full it keeps the strongest edges, not the first ones in raster order: each
-// point also has its gradient magnitude (a byte beside it), and a push onto a full list raises
-// a floor to the lowest magnitude that leaves at most 3/4 of the capacity, removes the points
-// below it (rows already filled included) and refuses weaker points from then on. So the list
-// always ends as "every edge of the frame at or above floor()", whatever the raster order
-// (amortised cost: one compaction per capacity/4 pushes).
+// When the list is full it keeps the strongest edges, and of the weaker ones every other step,
+// never "the first ones in raster order". Each point also has its gradient magnitude (a byte
+// beside it); a push onto a full list raises two levels so that at most 3/4 of the capacity
+// stays, and removes the points that fall short (rows already filled included):
+//   - thin_level(): the points at or above it, all of them, fill at most a quarter of that;
+//   - below it, only the points on an even step of their edge's tangent axis stay
+//     (ep::thinned_out): a long weak edge, a board's side against a bright wall, keeps every
+//     other pixel, which PPHT (gaps up to max_line_gap) and the quadrangle evidence (a step
+//     between two held ones counts) still follow, where a plain floor would lose all of it
+//     to a background of shorter, stronger edges;
+//   - floor(): below it, nothing.
+// So the list always ends as "every edge of the frame at or above thin_level(), and every one
+// on an even step at or above floor()", whatever the raster order (amortised cost: one
+// compaction per capacity/4 pushes).
 //
 // Packed point, LSB first:
 //   [10:0]  x      pixel column, 0..2047
@@ -49,6 +57,13 @@ constexpr int32_t x32(edge_point p) {
 }
 constexpr int32_t y32(edge_point p) {
     return static_cast<int32_t>(y(p)) * 32 + delta16(p) * axis_y2(dir(p));
+}
+// Thinning: true for a point on an odd step of its edge's tangent axis (y for a gradient
+// direction nearer x, 45° and 135° included; x otherwise), the points a full list drops first
+// below thin_level(): a thinned edge keeps every other step along itself.
+constexpr bool thinned_out(uint32_t x, uint32_t y, uint32_t dir) {
+    const uint32_t d = dir & 7u;
+    return (((d <= 2u || d >= 6u) ? y : x) & 1u) != 0;
 }
 constexpr edge_point with_state(edge_point p, uint32_t s) {
     return (p & ~(3u << 26)) | ((s & 3u) << 26);
@@ -94,8 +109,12 @@ public:
     uint16_t capacity() const { return capacity_; }
     uint32_t dropped() const { return dropped_; }  // points lost to the capacity this frame
     // Lowest magnitude kept this frame, grey levels (even; 0 until the list first filled):
-    // every edge at or above it is in the list. An edge stage may skip weaker pixels.
+    // every edge at or above it on an even step (and every one at or above thin_level()) is in
+    // the list. An edge stage may skip weaker pixels.
     uint16_t floor() const { return floor_; }
+    // Magnitude below which only points on an even step are kept, grey levels (even; 0 until
+    // the list first filled).
+    uint16_t thin_level() const { return thin_below_; }
     // The points' magnitudes matter only while the list fills and for hysteresis(): once the
     // frame is closed and filtered, their bytes are free, and PPHT keeps its working list there
     // (overwriting them): capacity() / 2 words.
@@ -157,7 +176,8 @@ private:
     int32_t search_and_probe(int32_t x, int32_t y, RowProbe& probe, bool forward) const;
     // Index of row y's first point with x >= key (row_start_[y + 1] when none); y in frame.
     uint32_t lower_bound(uint32_t key, uint32_t y) const;
-    // Raises floor_ until at most 3/4 of the capacity is left and removes the points below it.
+    // Raises thin_below_ and floor_ until at most 3/4 of the capacity is left and removes the
+    // points they no longer keep.
     void drop_weakest();
 
     edge_point* points_;
@@ -170,7 +190,8 @@ private:
     uint16_t height_ = 0;
     uint16_t next_row_ = 0;  // rows below this have their start recorded
     uint16_t current_y_ = 0;
-    uint16_t floor_ = 0;  // magnitude, grey levels
+    uint16_t floor_ = 0;       // magnitude, grey levels
+    uint16_t thin_below_ = 0;  // magnitude, grey levels: weaker points on an odd step go
     uint32_t dropped_ = 0;
 };
 

@@ -67,6 +67,20 @@ bool marks_in(const uint32_t* marks, uint32_t lo, uint32_t hi) {
     return false;
 }
 
+// A step between two held steps counts as held: a full edge list keeps every other step of
+// its weaker edges (edge_list.h), and a side seen through that thinning is a whole side.
+// In place, a word of marks at a time; a gap of two steps or more stays.
+void fill_single_gaps(uint32_t* marks, uint32_t words) {
+    uint32_t previous = 0;  // the word before, as it was
+    for (uint32_t j = 0; j < words; ++j) {
+        const uint32_t word = marks[j];
+        const uint32_t before = (word << 1) | (previous >> 31);
+        const uint32_t after = (word >> 1) | (j + 1 < words ? marks[j + 1] << 31 : 0u);
+        marks[j] = word | (before & after);
+        previous = word;
+    }
+}
+
 // Adds to m (coordinates relative to the walk's origin) every edge point within band32 of the
 // walk's line between t0 and t1 whose gradient runs across the line with the side's polarity;
 // returns the major-axis steps (pixel columns of a side nearer horizontal, rows otherwise)
@@ -156,6 +170,7 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
     // (a word of marks at a time; no mark lies at or beyond *steps).
     uint32_t held = 0;
     const uint32_t quarter = *steps / 4;
+    fill_single_gaps(marks, (*steps + 31u) / 32u);
     for (uint32_t j = 0; j < (*steps + 31u) / 32u; ++j) held += popcount32(marks[j]);
     if (marks_in(marks, 0, quarter)) *ends |= 1u;
     if (marks_in(marks, *steps - quarter, *steps)) *ends |= 2u;

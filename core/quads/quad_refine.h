@@ -44,7 +44,8 @@ struct RefineParams {
 
 // The edge evidence of a quadrangle's sides: per side, the steps along it (pixels of its major
 // axis between the end margins) and those holding an edge point of the side's polarity within
-// fine_band of the refitted line (of the given line when it was not refitted), and whether
+// fine_band of the refitted line (of the given line when it was not refitted; a step between
+// two such steps counts too, as a full edge list thins weak edges to every other step), and whether
 // some step within the first and within the last fifth of them held one (bit 0, bit 1: the
 // side shows next to both its corners).
 struct SideEvidence {

@@ -159,6 +159,56 @@ TEST_CASE("edge evidence rule: each side, the hidden one, both ends, the whole",
     CHECK_FALSE(verify_evidence(none, 0, p, &share));
 }
 
+TEST_CASE("edge evidence: a step between two held steps is held, a longer gap is not", "[refine]") {
+    // A bright 161 × 101 px rectangle, corners (40, 40) and (200, 140), drawn straight into an
+    // edge list: its sides' points on every `every`-th step of their own axis (x along the top
+    // and bottom, y down the left and right), gradient directions from dark to bright (bins
+    // 4, 12 for top and bottom, 0, 8 for left and right). Each side spans (161 or 101) − 2 ·
+    // (3 px end margin) steps; by hand: every step held at 1, every other step held filled in
+    // at 2 (the thinning of a full list, edge_list.h), a third at 3.
+    for (const uint16_t every : {1, 2, 3}) {
+        EdgeListStorage<1024, 240> storage;
+        EdgeList list = storage.view();
+        REQUIRE(list.begin_frame(240) == Status::ok);
+        for (uint16_t y = 0; y < 240; ++y) {
+            list.begin_row(y);
+            if (y == 40 || y == 140) {
+                for (uint16_t x = 40; x <= 200; ++x)
+                    if (x % every == 0) list.push(x, y == 40 ? 4 : 12, 0, 100);
+            } else if (y > 40 && y < 140 && y % every == 0) {
+                list.push(40, 0, 0, 100);
+                list.push(200, 8, 0, 100);
+            }
+        }
+        list.end_frame();
+        const scene::Point2 c[4] = {{40, 40}, {40, 140}, {200, 140}, {200, 40}};
+        Segment start[4];
+        const Segment* side_lines[4];
+        Quad quad{};
+        for (int i = 0; i < 4; ++i) {
+            start[i] = line_near(c[i], c[(i + 1) % 4], 0, 0, {120, 90});
+            side_lines[i] = &start[i];
+        }
+        for (int i = 0; i < 4; ++i)
+            REQUIRE(intersect_lines(start[(i + 3) % 4], start[i], quad.corners[i]));
+        Segment sides[4];
+        SideEvidence evidence{};
+        refine_quad(list, side_lines, RefineParams{}, quad, sides, &evidence);
+        for (int i = 0; i < 4; ++i) {
+            INFO("every " << every << " side " << i << ": " << evidence.held[i] << " of "
+                          << evidence.steps[i]);
+            const uint32_t steps = evidence.steps[i];
+            CHECK((steps == 155 || steps == 95));
+            // Steps 43 .. 137 (or 197): all; all but the two odd end steps, which have no held
+            // step beyond them; the multiples of 3, 45 .. 135 (or 195).
+            const uint32_t held[4] = {0, steps, steps - 2, (steps == 95 ? 135u : 195u) / 3 - 14};
+            CHECK(evidence.held[i] == held[every]);
+        }
+        q16_16 share;
+        CHECK(verify_evidence(evidence, 0, RefineParams{}, &share) == (every <= 2));
+    }
+}
+
 TEST_CASE("completion: a board whose side is hidden but for its two ends is found", "[refine]") {
     // A 90 × 70 px board; a dark arm from below hides the middle 60 % of its bottom side, so
     // the two visible pieces (18 px) are shorter than min_line_length: no line is found along
