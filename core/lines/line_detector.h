@@ -50,7 +50,7 @@ enum class FinishStage : uint8_t { hough, cluster, quads };
 
 struct LineStats {
     uint32_t edges = 0;             // edge points kept
-    uint32_t edges_dropped = 0;     // edge points lost to the edge capacity
+    uint32_t edges_dropped = 0;     // edge points lost to the edge capacity (thinned or floored)
     uint32_t edges_hysteresis = 0;  // canny: weak edge points not joined to a strong one
     HoughStats hough;
     ClusterStats cluster;

@@ -154,6 +154,21 @@ bool QuadTracker::within_reach(int side, const Segment& predicted, const Segment
     return true;
 }
 
+int QuadTracker::whole_match(const Segment* lines, uint16_t n, const Quad& quad,
+                             const Segment predicted[4], const Point16 corners[4]) const {
+    // The detection's side i + shift is the track's side i (both wind anti-clockwise).
+    for (int shift = 0; shift < 4; ++shift) {
+        bool agrees = true;
+        for (int i = 0; i < 4 && agrees; ++i) {
+            const uint8_t j = quad.lines[(i + shift) % 4];
+            agrees = j < n && gated(lines[j], predicted[i]) &&
+                     side_overlap(corners[i], corners[(i + 1) % 4], lines[j]).raw > 0;
+        }
+        if (agrees) return shift;
+    }
+    return -1;
+}
+
 uint8_t QuadTracker::take_back(const Segment* lines, uint16_t n, const Quad& quad,
                                const Segment predicted[4], uint8_t detected, uint32_t used[8]) {
     q16_16 lengths[4];
@@ -224,12 +239,23 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
         if (!corners_of(predicted, params_.shape, corners)) {
             lost = QuadTrackLost::shape;
         } else {
-            // Association: each side takes the longest gated line; a line serves one side. A
-            // frame without lines leaves every side unmatched (and counted in missed_).
+            // Association: this frame's best detection when each of its sides passes the gate
+            // of one of the track's (its sides are refitted to the edge evidence between its
+            // corners); otherwise each side takes the longest gated line. A line serves one side.
+            // A frame without lines leaves every side unmatched (and counted in missed_).
             uint32_t used[8] = {};  // bit set of line indices < 256
+            const int shift =
+                quad_count > 0 ? whole_match(lines, n, quads[0], predicted, corners) : -1;
             for (int i = 0; i < 4; ++i) {
                 const Point16 a = corners[i], b = corners[(i + 1) % 4];
-                int best = -1;
+                int best = shift >= 0 ? quads[0].lines[(i + shift) % 4] : -1;
+                if (best >= 0) {
+                    used[best / 32] |= 1u << (best % 32);
+                    sides_[i].update(lines[best]);
+                    detected = static_cast<uint8_t>(detected | (1u << i));
+                    missed_[i] = 0;
+                    continue;
+                }
                 uint64_t best_len2 = 0;  // its squared length; the length is compared below
                 for (uint16_t j = 0; j < n && j < 256; ++j) {
                     if (used[j / 32] & (1u << (j % 32))) continue;
