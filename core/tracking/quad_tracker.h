@@ -9,9 +9,13 @@
 //   2. Track: each side's tracker predicts; each side takes the detected line that passes the
 //      gate — orientation within gate_angle of the predicted side (modulo 180°), both ends
 //      within gate_distance px of the predicted line, the same contrast polarity when both
-//      are known, and overlapping the predicted side's extent — choosing the longest such line;
-//      a line serves one side at most. Matched sides are updated ("detected"), the others keep
-//      their prediction ("predicted"). The corners are the crossings of consecutive sides.
+//      are known, and overlapping the predicted side's extent. When each side of this frame's
+//      best detected quadrangle passes the gate of one tracked side (in the same cyclic order),
+//      those four lines are taken: they were refitted to the edge evidence between the
+//      detection's corners, where the longest gated line can be a background edge clustered
+//      onto a side. Otherwise each side takes the longest gated line; a line serves one side
+//      at most. Matched sides are updated ("detected"), the others keep their prediction
+//      ("predicted"). The corners are the crossings of consecutive sides.
 //   2b. Taking a lost side back. A predicted side can drift beyond the gate from the line the
 //      detector sees (the paper's constant-velocity model on a board turning 2.5°/frame: 12 px
 //      after three hidden frames of the demo), and would then stay predicted until the track

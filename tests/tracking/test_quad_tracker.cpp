@@ -183,6 +183,28 @@ TEST_CASE("quad tracker: distractors and wrong polarity are not taken", "[quad_t
     CHECK(corner_error(t, c) < 0.5);
 }
 
+TEST_CASE("quad tracker: a longer background line in a side's gate loses to the detected board",
+          "[quad_tracker]") {
+    // A background edge 6 px outside the right side (inside the 12 px gate, same polarity),
+    // from the side's middle to 150 px beyond its bottom corner: longer than the side. The
+    // detection is the board (the edge covers half the right side of any other quadrangle),
+    // and its side is the measurement; the longest gated line would move the side 6 px.
+    Harness h;
+    P c[4];
+    h.warm_up(10, c);
+    board(10, c);
+    std::vector<Segment> lines = sides(c);
+    const P mid{(c[0].x + c[2].x) / 2, (c[0].y + c[2].y) / 2};
+    const double ox = (c[2].x - c[1].x) / 120 * 6, oy = (c[2].y - c[1].y) / 120 * 6;
+    const double ux = (c[2].x - c[3].x) / 90, uy = (c[2].y - c[3].y) / 90;
+    lines.push_back(segment({(c[2].x + c[3].x) / 2 + ox, (c[2].y + c[3].y) / 2 + oy},
+                            {c[2].x + 150 * ux + ox, c[2].y + 150 * uy + oy}, mid));
+    const TrackedQuad t = h.step(lines);
+    REQUIRE(t.state == TrackState::tracking);
+    CHECK(t.detected == 0xF);
+    CHECK(corner_error(t, c) < 0.5);
+}
+
 TEST_CASE("quad tracker: a side unseen too long loses the track, the next detection restarts it",
           "[quad_tracker]") {
     Harness h;
