@@ -46,7 +46,7 @@ struct RefineParams {
 // axis between the end margins) and those holding an edge point of the side's polarity within
 // fine_band of the refitted line (of the given line when it was not refitted; a step between
 // two such steps counts too, as a full edge list thins weak edges to every other step), and whether
-// some step within the first and within the last fifth of them held one (bit 0, bit 1: the
+// some step within the first and within the last quarter of them held one (bit 0, bit 1: the
 // side shows next to both its corners).
 struct SideEvidence {
     uint16_t steps[4];
