@@ -112,11 +112,31 @@ TEST_CASE("clutter that fills every capacity does not cost the most salient boar
     CHECK(worst_corner(g_qvga, img, board) < 1.0);
     const LineStats& s = g_qvga.lines().stats();
     CHECK(s.edges_dropped > 0);                  // the edge list filled ...
-    CHECK(g_qvga.lines().edges().floor() > 40);  // ... and kept its strongest edges
+    CHECK(g_qvga.lines().edges().floor() > 40);  // ... and raised its floor
     WARN("edges dropped " << s.edges_dropped << ", segments dropped " << s.hough.segments_dropped
                           << ", clusters dropped " << s.cluster.clusters_dropped);
     CHECK(s.hough.segments_dropped > 0);    // the segment list filled too
     CHECK(s.cluster.clusters_dropped > 0);  // and the line list
+}
+
+TEST_CASE("boards whose sides are weaker than the photograph's edges keep them in a full list",
+          "[photo_boards]") {
+    // Scenes of the photo bench (bash bench.sh photos-host, unoccluded QVGA set, its seeds and
+    // photographs) in which the board's weakest side is fainter than the facade's or the
+    // painting's edges: a list that kept only its strongest edges lost at least one side in
+    // each (the bench at commit 887dedd listed them as missed). Thinned, every other step of
+    // the faint sides stays (lines/edge_list.h).
+    for (const int k : {84, 108, 176, 584, 608, 1352}) {
+        scene::PhotoBoardOptions o;
+        o.width = 320;
+        o.height = 240;
+        const auto& photo = photos()[static_cast<size_t>(k) % photos().size()].image;
+        const scene::PhotoBoardScene s =
+            scene::make_photo_board_scene(o, photo, 1000000 + static_cast<uint64_t>(k));
+        INFO("scene " << k);
+        CHECK(worst_corner(g_qvga, s.image, s.corners) <= 3);
+        CHECK(g_qvga.lines().edges().thin_level() > g_qvga.lines().edges().floor());
+    }
 }
 
 TEST_CASE("boards on real photographs: found with sub-pixel corners, false detections rare",
@@ -125,13 +145,13 @@ TEST_CASE("boards on real photographs: found with sub-pixel corners, false detec
     // figures and says where the aims are not met).
     const Tally u = run_set(g_qvga, 320, 240, true, false, 7000000, 48);
     WARN("QVGA unoccluded: " << u.detected << " of " << u.scenes);
-    CHECK(u.detected >= 45);
+    CHECK(u.detected >= 47);
     REQUIRE(u.corners > 0);
     CHECK(std::sqrt(u.sum_sq / u.corners) <= 0.3);
 
     const Tally occ = run_set(g_qvga, 320, 240, true, true, 7100000, 24);
     WARN("QVGA occluded: " << occ.detected << " of " << occ.scenes);
-    CHECK(occ.detected >= 20);
+    CHECK(occ.detected >= 23);
 
     const Tally none = run_set(g_qvga, 320, 240, false, false, 7200000, 48);
     WARN("QVGA board-free frames with a quadrangle: " << none.quads << " of " << none.scenes);
@@ -139,7 +159,7 @@ TEST_CASE("boards on real photographs: found with sub-pixel corners, false detec
 
     const Tally v = run_set(g_vga, 640, 480, true, false, 7300000, 16);
     WARN("VGA unoccluded: " << v.detected << " of " << v.scenes);
-    CHECK(v.detected >= 15);
+    CHECK(v.detected >= 16);
     REQUIRE(v.corners > 0);
     CHECK(std::sqrt(v.sum_sq / v.corners) <= 0.3);
 }
