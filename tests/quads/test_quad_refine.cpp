@@ -58,6 +58,20 @@ Segment line_near(scene::Point2 a, scene::Point2 b, double shift, double turn_de
     return s;
 }
 
+// The quadrangle whose sides are the exact lines through corners c (side i from c[i] to
+// c[i + 1]), the board's inside at `inside`: its lines in start, pointed to by side_lines.
+Quad exact_quad(const scene::Point2 c[4], scene::Point2 inside, Segment start[4],
+                const Segment* side_lines[4]) {
+    Quad quad{};
+    for (int i = 0; i < 4; ++i) {
+        start[i] = line_near(c[i], c[(i + 1) % 4], 0, 0, inside);
+        side_lines[i] = &start[i];
+    }
+    for (int i = 0; i < 4; ++i)
+        REQUIRE(intersect_lines(start[(i + 3) % 4], start[i], quad.corners[i]));
+    return quad;
+}
+
 LineDetectorQvga g_lines;
 
 }  // namespace
@@ -110,13 +124,7 @@ TEST_CASE("a side without edges keeps its line and the evidence turns the quadra
     REQUIRE(io::push_frame(g_lines, img, LineParams{}) == Status::ok);
     Segment start[4];
     const Segment* side_lines[4];
-    Quad quad{};
-    for (int i = 0; i < 4; ++i) {
-        start[i] = line_near(kCorners[i], kCorners[(i + 1) % 4], 0, 0, {155, 110});
-        side_lines[i] = &start[i];
-    }
-    for (int i = 0; i < 4; ++i)
-        REQUIRE(intersect_lines(start[(i + 3) % 4], start[i], quad.corners[i]));
+    Quad quad = exact_quad(kCorners, {155, 110}, start, side_lines);
     Segment sides[4];
     SideEvidence evidence{};
     const uint8_t refitted =
@@ -184,13 +192,7 @@ TEST_CASE("edge evidence: a step between two held steps is held, a longer gap is
         const scene::Point2 c[4] = {{40, 40}, {40, 140}, {200, 140}, {200, 40}};
         Segment start[4];
         const Segment* side_lines[4];
-        Quad quad{};
-        for (int i = 0; i < 4; ++i) {
-            start[i] = line_near(c[i], c[(i + 1) % 4], 0, 0, {120, 90});
-            side_lines[i] = &start[i];
-        }
-        for (int i = 0; i < 4; ++i)
-            REQUIRE(intersect_lines(start[(i + 3) % 4], start[i], quad.corners[i]));
+        Quad quad = exact_quad(c, {120, 90}, start, side_lines);
         Segment sides[4];
         SideEvidence evidence{};
         refine_quad(list, side_lines, RefineParams{}, quad, sides, &evidence);
