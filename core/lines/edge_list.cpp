@@ -25,13 +25,14 @@ void EdgeList::begin_row(uint16_t y) {
 
 bool EdgeList::push(uint16_t x, uint32_t dir, int32_t delta16, uint32_t magnitude) {
     if (count_ == capacity_) drop_weakest();
+    const edge_point p = ep::make(x, current_y_, dir, delta16);
     if (magnitude < floor_ || count_ == capacity_ ||
-        (magnitude < thin_below_ && ep::thinned_out(x, current_y_, dir))) {
+        (magnitude < thin_below_ && ep::thinned_out(p))) {
         ++dropped_;
         return false;
     }
     strength_[count_] = static_cast<uint8_t>(magnitude > 510u ? 255u : magnitude / 2u);
-    points_[count_++] = ep::make(x, current_y_, dir, delta16);
+    points_[count_++] = p;
     return true;
 }
 
@@ -40,15 +41,11 @@ void EdgeList::drop_weakest() {
     // levels. even[s]: the points of strength s on an even step (thinning keeps them).
     uint16_t histogram[256] = {}, even[256] = {};
     uint32_t top = 0;
-    for (uint32_t y = 0; y < next_row_; ++y) {
-        const uint32_t end = y + 1 < next_row_ ? row_start_[y + 1] : count_;
-        for (uint32_t i = row_start_[y]; i < end; ++i) {
-            const uint32_t st = strength_[i];
-            ++histogram[st];
-            even[st] = static_cast<uint16_t>(
-                even[st] + !ep::thinned_out(ep::x(points_[i]), y, ep::dir(points_[i])));
-            top = st > top ? st : top;
-        }
+    for (uint32_t i = 0; i < count_; ++i) {
+        const uint32_t st = strength_[i];
+        ++histogram[st];
+        even[st] = static_cast<uint16_t>(even[st] + !ep::thinned_out(points_[i]));
+        top = st > top ? st : top;
     }
     const uint32_t keep_at_most = capacity_ - capacity_ / 4u;
     // whole: the lowest strength whose points, all of them, fill a quarter of what is kept;
@@ -76,9 +73,7 @@ void EdgeList::drop_weakest() {
         const uint32_t begin = row_start_[y];
         row_start_[y] = static_cast<uint16_t>(write);
         for (uint32_t i = begin; i < end; ++i) {
-            if (strength_[i] < s || (strength_[i] < whole &&
-                                     ep::thinned_out(ep::x(points_[i]), y, ep::dir(points_[i]))))
-                continue;
+            if (strength_[i] < s || (strength_[i] < whole && ep::thinned_out(points_[i]))) continue;
             points_[write] = points_[i];
             strength_[write] = strength_[i];
             ++write;

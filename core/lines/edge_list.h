@@ -61,9 +61,9 @@ constexpr int32_t y32(edge_point p) {
 // Thinning: true for a point on an odd step of its edge's tangent axis (y for a gradient
 // direction nearer x, 45° and 135° included; x otherwise), the points a full list drops first
 // below thin_level(): a thinned edge keeps every other step along itself.
-constexpr bool thinned_out(uint32_t x, uint32_t y, uint32_t dir) {
-    const uint32_t d = dir & 7u;
-    return (((d <= 2u || d >= 6u) ? y : x) & 1u) != 0;
+constexpr bool thinned_out(edge_point p) {
+    const uint32_t d = dir(p) & 7u;
+    return (((d <= 2u || d >= 6u) ? y(p) : x(p)) & 1u) != 0;
 }
 constexpr edge_point with_state(edge_point p, uint32_t s) {
     return (p & ~(3u << 26)) | ((s & 3u) << 26);

@@ -169,9 +169,9 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
     // Steps holding a point, and whether any lies in the first or the last quarter of them
     // (a word of marks at a time; no mark lies at or beyond *steps).
     uint32_t held = 0;
-    const uint32_t quarter = *steps / 4;
-    fill_single_gaps(marks, (*steps + 31u) / 32u);
-    for (uint32_t j = 0; j < (*steps + 31u) / 32u; ++j) held += popcount32(marks[j]);
+    const uint32_t quarter = *steps / 4, words = (*steps + 31u) / 32u;
+    fill_single_gaps(marks, words);
+    for (uint32_t j = 0; j < words; ++j) held += popcount32(marks[j]);
     if (marks_in(marks, 0, quarter)) *ends |= 1u;
     if (marks_in(marks, *steps - quarter, *steps)) *ends |= 2u;
     // The walk may run either way along the side: bit 0 is the end at the walk's origin.

@@ -249,15 +249,8 @@ TrackedQuad QuadTracker::step(const Segment* lines, uint16_t n, const Quad* quad
             for (int i = 0; i < 4; ++i) {
                 const Point16 a = corners[i], b = corners[(i + 1) % 4];
                 int best = shift >= 0 ? quads[0].lines[(i + shift) % 4] : -1;
-                if (best >= 0) {
-                    used[best / 32] |= 1u << (best % 32);
-                    sides_[i].update(lines[best]);
-                    detected = static_cast<uint8_t>(detected | (1u << i));
-                    missed_[i] = 0;
-                    continue;
-                }
                 uint64_t best_len2 = 0;  // its squared length; the length is compared below
-                for (uint16_t j = 0; j < n && j < 256; ++j) {
+                for (uint16_t j = 0; shift < 0 && j < n && j < 256; ++j) {
                     if (used[j / 32] & (1u << (j % 32))) continue;
                     const Segment& s = lines[j];
                     if (!gated(s, predicted[i])) continue;

@@ -147,13 +147,13 @@ private:
     bool gated(const Segment& s, const Segment& predicted) const;
     // Both ends of `s` within take_back_sigmas standard deviations of side `side`'s prediction.
     bool within_reach(int side, const Segment& predicted, const Segment& s) const;
+    // The cyclic shift that makes `quad`'s side i + shift pass the gate of the track's side i
+    // (and overlap it) for every i, or -1.
+    int whole_match(const Segment* lines, uint16_t n, const Quad& quad, const Segment predicted[4],
+                    const Point16 corners[4]) const;
     // Takes the unmatched sides back from `quad` when it agrees with the matched ones
     // (`detected` bits, tracker order); marks the lines it takes in `used`. Returns the bits of
     // the sides taken.
-    // The cyclic shift that makes `quad`'s side i + shift pass the gate of the track's side i
-    // for every i, or -1.
-    int whole_match(const Segment* lines, uint16_t n, const Quad& quad, const Segment predicted[4],
-                    const Point16 corners[4]) const;
     uint8_t take_back(const Segment* lines, uint16_t n, const Quad& quad,
                       const Segment predicted[4], uint8_t detected, uint32_t used[8]);
 
