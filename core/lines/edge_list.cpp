@@ -25,9 +25,9 @@ void EdgeList::begin_row(uint16_t y) {
 
 bool EdgeList::push(uint16_t x, uint32_t dir, int32_t delta16, uint32_t magnitude) {
     if (count_ == capacity_) drop_weakest();
-    const edge_point p = ep::make(x, current_y_, dir, delta16);
-    if (magnitude < floor_ || count_ == capacity_ ||
-        (magnitude < thin_below_ && ep::thinned_out(p))) {
+    const bool refused = magnitude < floor_ || count_ == capacity_;
+    const edge_point p = refused ? 0u : ep::make(x, current_y_, dir, delta16);
+    if (refused || (magnitude < thin_below_ && ep::thinned_out(p))) {
         ++dropped_;
         return false;
     }
