@@ -12,6 +12,7 @@
 
 #include "lines/line_detector.h"
 #include "quads/quad_detector.h"
+#include "quads/quad_interior.h"
 #include "quads/quad_refine.h"
 
 namespace qt {
@@ -99,6 +100,12 @@ public:
             if (!rule_corners_inside(quad.corners, lines_.width(), lines_.height(),
                                      params_.quads)) {
                 ++quad_stats_.rejected_inside;
+                continue;
+            }
+            if (!interior_clear(
+                    count_inside_edges(lines_.edges(), quad.corners, params_.refine.inside_margin),
+                    lines_.height(), params_.refine.max_inside_edge_cells_percent)) {
+                ++quad_stats_.rejected_interior;
                 continue;
             }
             // Two candidates that refit to one quadrangle (corners within collinear_distance)

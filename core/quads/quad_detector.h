@@ -48,6 +48,8 @@ struct QuadStats {
     uint16_t quads = 0;                   // written to the output (the best `capacity` of them)
     uint16_t rejected_evidence = 0;       // of those, turned down by the edge evidence along their
                                           // sides (board_detector.h, quad_refine.h)
+    uint16_t rejected_interior = 0;       // of those, turned down for the edges inside them
+                                          // (quad_interior.h)
 };
 
 // One parallel pair: two line indices.

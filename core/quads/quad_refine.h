@@ -40,6 +40,12 @@ struct RefineParams {
     uint8_t min_hidden_side_evidence_percent = 20;
     uint8_t min_evidence_percent = 60;
     bool verify = true;  // false: every candidate is kept, scored by its evidence all the same
+    // The inside (quad_interior.h): a kept quadrangle has at most this share of the 2 × 2 px
+    // cells inside it holding an edge point farther than inside_margin from its sides, % at
+    // 240 rows (scaled by 240 / rows). 0: not tested (a board showing projected or printed
+    // content with strong edges).
+    uint8_t max_inside_edge_cells_percent = 16;
+    q16_16 inside_margin = q16_16::from_int(4);  // px
 };
 
 // The edge evidence of a quadrangle's sides: per side, the steps along it (pixels of its major

@@ -28,6 +28,7 @@
 #include "io/png_writer.h"
 #include "io/push_frame.h"
 #include "quads/board_detector.h"
+#include "quads/quad_interior.h"
 #include "scene/photo_board_scene.h"
 #include "tracking/quad_tracker.h"
 
@@ -124,6 +125,20 @@ struct Tally {
     double worst_ms() const { return ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end()); }
 };
 
+// The share of the 2 × 2 px cells inside the last quadrangle ours reported that hold an edge
+// point, % at 240 rows (quad_interior.h's measure, which --max-inside-edges limits).
+double g_inside_percent = 0;
+
+// The measure's spread over a set's reported quadrangles, as "median / 99th percentile / max".
+std::string spread(std::vector<double> v) {
+    if (v.empty()) return "—";
+    std::sort(v.begin(), v.end());
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f / %.1f / %.1f", v[v.size() / 2],
+                  v[std::min(v.size() - 1, v.size() * 99 / 100)], v.back());
+    return text;
+}
+
 // One detector per frame size, as firmware would compile them.
 template <class Detector>
 struct Ours {
@@ -137,6 +152,10 @@ struct Ours {
         }
         *capacity = s == qt::Status::capacity_exceeded;
         if (det.quad_count() == 0) return false;
+        const qt::InteriorCount in = qt::count_inside_edges(
+            det.lines().edges(), det.quads()[0].corners, params.refine.inside_margin);
+        g_inside_percent =
+            in.area_px == 0 ? 0.0 : 400.0 * in.cells * img.height / (240.0 * in.area_px);
         for (int i = 0; i < 4; ++i)
             c[i] = {det.quads()[0].corners[i].x.raw / 65536.0,
                     det.quads()[0].corners[i].y.raw / 65536.0};
@@ -358,10 +377,12 @@ int main(int argc, char** argv) {
         "| method | size | set | scenes | detected | corner RMSE px | false detections | "
         "capacity_exceeded | "
         "median ms | worst ms |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    std::string inside_lines;
     for (const Size& sz : sizes) {
         for (const Method& m : methods) {
             for (const Set& set : sets) {
                 Tally t;
+                std::vector<double> inside_boards, inside_others;
                 for (int k = 0; k < scenes; ++k) {
                     sc::PhotoBoardOptions o;
                     o.width = sz.w;
@@ -378,6 +399,8 @@ int main(int argc, char** argv) {
                     const double ms =
                         std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
                     const char* failure = t.add(s, found, c, capacity, ms);
+                    if (found && &m == &methods[0])
+                        (*failure ? inside_others : inside_boards).push_back(g_inside_percent);
                     if (list_failures && *failure)
                         std::printf(
                             "  %s %s %s seed %llu %s: %s (tilt %.1f, roll %.1f, scale %.2f, aspect "
@@ -397,9 +420,18 @@ int main(int argc, char** argv) {
                     }
                 }
                 print_row(m.name, sz.name, set.name, t, set.board);
+                if (&m == &methods[0])
+                    inside_lines += std::string("| ") + sz.name + " | " + set.name + " | " +
+                                    spread(inside_boards) + " | " + spread(inside_others) + " |\n";
             }
         }
     }
+    std::printf(
+        "\n2x2 px cells inside the reported quadrangle holding an edge point, %% at 240 rows "
+        "(limit: --max-inside-edges %u), median / 99th percentile / max\n| size | set | the board "
+        "| "
+        "another quadrangle |\n|---|---|---|---|\n%s",
+        options.params.refine.max_inside_edge_cells_percent, inside_lines.c_str());
     if (sequence) {
         std::printf(
             "\n| sequence | size | photograph | frames | tracked within %.0f px RMS | while a side "

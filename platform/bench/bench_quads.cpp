@@ -96,7 +96,7 @@ bool ours(const qt::io::GreyImage& img, Corners& c) {
 }
 
 // The paper's five rules alone: no contrast test, no support requirement, no edge evidence, no
-// completion of a hidden side (the sides are still refined).
+// completion of a hidden side, no test of the inside (the sides are still refined).
 bool rules_only(const qt::io::GreyImage& img, Corners& c) {
     qt::BoardParams p;
     p.quads.contrast = qt::Contrast::any;
@@ -104,6 +104,7 @@ bool rules_only(const qt::io::GreyImage& img, Corners& c) {
     p.quads.min_score = qt::q16_16::from_int(0);
     p.quads.complete_hidden_side = false;
     p.refine.verify = false;
+    p.refine.max_inside_edge_cells_percent = 0;
     return detect_with(img, p, c);
 }
 

@@ -289,6 +289,18 @@ const FlagTable<DetectOptions, Command>& table() {
                 "the four sides together: edge evidence along at least this share, %, 0..100", 0,
                 100,
                 [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_evidence_percent; }),
+            integer<uint8_t>(
+                "max-inside-edges", "PERCENT",
+                "a kept quadrangle has at most this share of the 2x2 px cells inside it holding "
+                "an edge point (farther than --inside-margin from its sides), % at 240 rows, "
+                "scaled by 240 / rows, 0..100 (0: not tested)",
+                0, 100,
+                [](DetectOptions& o) -> uint8_t& {
+                    return o.params.refine.max_inside_edge_cells_percent;
+                }),
+            decimal("inside-margin", "PX",
+                    "edge points this close to a side are not counted inside, pixels, 0..16", 0, 16,
+                    [](DetectOptions& o) -> q16_16& { return o.params.refine.inside_margin; }),
             integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1,
                               HostBoardDetector::max_quads(),
                               [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),

@@ -5,6 +5,7 @@
 // `bash bench.sh photos-host`; these seeds (7000000+) are not the bench's.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -58,9 +59,15 @@ struct Tally {
     double sum_sq = 0;
 };
 
+// `scenes` scenes, the photographs in turn (only those named in `only` when it is not empty).
 template <class Detector>
 Tally run_set(Detector& det, int width, int height, bool board, bool occlude, uint64_t seed0,
-              int scenes) {
+              int scenes, const std::vector<std::string>& only = {}) {
+    std::vector<const io::GreyImage*> chosen;
+    for (const io::NamedImage& p : photos())
+        if (only.empty() || std::find(only.begin(), only.end(), p.name) != only.end())
+            chosen.push_back(&p.image);
+    REQUIRE(!chosen.empty());
     Tally t;
     for (int k = 0; k < scenes; ++k) {
         scene::PhotoBoardOptions o;
@@ -68,7 +75,7 @@ Tally run_set(Detector& det, int width, int height, bool board, bool occlude, ui
         o.height = height;
         o.board = board;
         o.occlude = occlude;
-        const auto& photo = photos()[static_cast<size_t>(k) % photos().size()].image;
+        const auto& photo = *chosen[static_cast<size_t>(k) % chosen.size()];
         const scene::PhotoBoardScene s =
             scene::make_photo_board_scene(o, photo, seed0 + static_cast<uint64_t>(k));
         double sq = 0;
@@ -162,4 +169,15 @@ TEST_CASE("boards on real photographs: found with sub-pixel corners, false detec
     CHECK(v.detected >= 16);
     REQUIRE(v.corners > 0);
     CHECK(std::sqrt(v.sum_sq / v.corners) <= 0.3);
+}
+
+TEST_CASE("a photograph's own printed rectangles are not taken for the board", "[photo_boards]") {
+    // left.pnm holds a box whose printed face is a clean quadrangle, box_in_scene.pnm boxes and
+    // books: the outline passes every rule, the print inside does not (quad_interior.h). Without
+    // the inside test 5 of these 48 frames gave a quadrangle; with it, 1.
+    const Tally none =
+        run_set(g_qvga, 320, 240, false, false, 7400000, 48, {"left.pnm", "box_in_scene.pnm"});
+    WARN("QVGA board-free frames of boxes with a quadrangle: " << none.quads << " of "
+                                                               << none.scenes);
+    CHECK(none.quads <= 1);
 }

@@ -1,0 +1,74 @@
+#include "quads/quad_interior.h"
+
+#include "base/isqrt.h"
+
+namespace qt {
+
+namespace {
+
+// q16.16 pixels to 1/16 pixel (floor): frames up to 2048 px give |values| < 2^15.
+int32_t sixteenths(q16_16 v) { return v.raw >> 12; }
+
+}  // namespace
+
+InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4], q16_16 margin) {
+    InteriorCount count;
+    int32_t cx[4], cy[4];
+    for (int i = 0; i < 4; ++i) cx[i] = sixteenths(corners[i].x), cy[i] = sixteenths(corners[i].y);
+    // Twice the signed area, (1/16 px)²: its sign is the orientation.
+    int64_t area2 = 0;
+    for (int i = 0; i < 4; ++i) {
+        const int j = (i + 1) & 3;
+        area2 += static_cast<int64_t>(cx[i]) * cy[j] - static_cast<int64_t>(cx[j]) * cy[i];
+    }
+    const int64_t sign = area2 < 0 ? -1 : 1;
+    count.area_px = static_cast<uint32_t>((area2 < 0 ? -area2 : area2) / 512);
+    if (area2 == 0) return count;
+    // Side i as a half-plane: inside by more than the margin when
+    // sign · (dx·(y − cy) − dy·(x − cx)) > margin · |d| (all in 1/16 px).
+    int64_t dx[4], dy[4], need[4];
+    const int64_t margin16 = sixteenths(margin);
+    for (int i = 0; i < 4; ++i) {
+        const int j = (i + 1) & 3;
+        dx[i] = cx[j] - cx[i];
+        dy[i] = cy[j] - cy[i];
+        need[i] = margin16 * isqrt64(static_cast<uint64_t>(dx[i] * dx[i] + dy[i] * dy[i]));
+    }
+    int32_t x_lo = cx[0], x_hi = cx[0], y_lo = cy[0], y_hi = cy[0];
+    for (int i = 1; i < 4; ++i) {
+        x_lo = cx[i] < x_lo ? cx[i] : x_lo;
+        x_hi = cx[i] > x_hi ? cx[i] : x_hi;
+        y_lo = cy[i] < y_lo ? cy[i] : y_lo;
+        y_hi = cy[i] > y_hi ? cy[i] : y_hi;
+    }
+    // Pixels whose centre is in the bounding box: ceil(lo / 16) .. floor(hi / 16); rows in
+    // pairs, one row of cells each, its occupied cells as bits of x / 2.
+    uint32_t occupied[(ep::kMaxCoordinate + 1) / 64] = {};
+    const int32_t first_row = (y_lo + 15) >> 4, last_row = y_hi >> 4;
+    for (int32_t y = first_row < 0 ? 0 : first_row; y <= last_row; ++y) {
+        uint32_t i = 0, end = 0;
+        edges.span((x_lo + 15) >> 4, x_hi >> 4, y, &i, &end);
+        for (; i < end; ++i) {
+            const uint32_t x = ep::x(edges[static_cast<uint16_t>(i)]);
+            const int64_t px = 16 * static_cast<int64_t>(x), py = 16 * static_cast<int64_t>(y);
+            bool inside = true;
+            for (int s = 0; s < 4 && inside; ++s)
+                inside = sign * (dx[s] * (py - cy[s]) - dy[s] * (px - cx[s])) > need[s];
+            if (!inside) continue;
+            const uint32_t cell = x >> 1, bit = 1u << (cell & 31u);
+            count.cells += (occupied[cell >> 5] & bit) == 0;
+            occupied[cell >> 5] |= bit;
+        }
+        if (y & 1)
+            for (uint32_t& word : occupied) word = 0;
+    }
+    return count;
+}
+
+bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent) {
+    if (limit_percent == 0) return true;
+    return static_cast<uint64_t>(count.cells) * 400u * height <=
+           static_cast<uint64_t>(limit_percent) * count.area_px * 240u;
+}
+
+}  // namespace qt

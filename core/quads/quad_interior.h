@@ -1,0 +1,42 @@
+// The inside of a quadrangle: how much of it holds edge points, away from its sides.
+//
+// Why: the board is blank — a white card, at most faint print. The rectangles a photograph
+// holds by itself (a box's printed face, a book, a poster, a window with a room behind it)
+// pass every rule of the outline, but they carry texture inside. The inside is divided into
+// cells of 2 × 2 px, and the cells holding an edge point of the frame's edge list farther than
+// a margin from each side (a side's own blurred edge and its refit residual stay out) are
+// counted. Cells rather than points: a full edge list keeps every other step of its weaker
+// edges (edge_list.h), which leaves such a cell occupied, so the measure does not halve on a
+// busy frame.
+//
+// The share is compared at a common scale: a camera of twice the rows sees the same texture
+// with half the share of cells on an edge (edge length grows with the rows, area with their
+// square), so the limit is stated for a frame 240 rows high and a frame of H rows is held to
+// limit · 240 / H.
+#pragma once
+#include <stdint.h>
+
+#include "base/fixed.h"
+#include "lines/edge_list.h"
+#include "quads/quad_rules.h"
+
+namespace qt {
+
+struct InteriorCount {
+    uint32_t cells = 0;    // 2 × 2 px cells (x / 2, y / 2) holding an edge point inside,
+                           // farther than the margin from every side
+    uint32_t area_px = 0;  // the quadrangle's area, px² (rounded down): area_px / 4 cells
+};
+
+// Counts the cells of `edges` strictly inside the convex quadrangle `corners` (either
+// orientation) and farther than `margin` px from each of its sides. Work: one span lookup per
+// row of the quadrangle's bounding box and four half-plane tests per point in it; 128 B of
+// stack (a row of cells, frames up to 2048 px wide).
+InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4], q16_16 margin);
+
+// True when the inside is clear: at most limit_percent % of its cells hold an edge point at
+// 240 rows, limit_percent · 240 / height % at `height` rows, i.e.
+// cells · 4 · 100 · height <= limit_percent · area · 240. 0 turns the test off.
+bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent);
+
+}  // namespace qt
