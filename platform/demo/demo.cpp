@@ -102,7 +102,7 @@ int run_demo(const std::string& out_dir) {
               save_demo_picture(out_dir + "/gradient_direction.png", w, h, 3, direction);
 
     // Lines stage: edges (blue), PPHT segments (yellow), clustered lines (red).
-    static LineDetectorVga lines;  // 86 KB: static, as firmware would keep it
+    static LineDetectorVga lines;  // ram_bytes(): static, as firmware would keep it
     s = lines.begin_frame(static_cast<uint16_t>(w), static_cast<uint16_t>(h), LineParams{});
     for (int y = 0; y < h && s == Status::ok; ++y)
         s = lines.push_row(frame.row(y), static_cast<uint16_t>(w));
