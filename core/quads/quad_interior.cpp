@@ -26,13 +26,17 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
     if (area2 == 0) return count;
     // Side i as a half-plane: inside by more than the margin when
     // sign · (dx·(y − cy) − dy·(x − cx)) > margin · |d| (all in 1/16 px).
-    int64_t dx[4], dy[4], need[4];
+    // 32 × 32 → 64-bit products only (one SMULL each on a Cortex-M).
+    int32_t dx[4], dy[4];
+    int64_t need[4];
     const int64_t margin16 = sixteenths(margin);
     for (int i = 0; i < 4; ++i) {
         const int j = (i + 1) & 3;
         dx[i] = cx[j] - cx[i];
         dy[i] = cy[j] - cy[i];
-        need[i] = margin16 * isqrt64(static_cast<uint64_t>(dx[i] * dx[i] + dy[i] * dy[i]));
+        const int64_t len2 =
+            static_cast<int64_t>(dx[i]) * dx[i] + static_cast<int64_t>(dy[i]) * dy[i];
+        need[i] = margin16 * isqrt64(static_cast<uint64_t>(len2));
     }
     int32_t x_lo = cx[0], x_hi = cx[0], y_lo = cy[0], y_hi = cy[0];
     for (int i = 1; i < 4; ++i) {
@@ -50,10 +54,12 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
         edges.span((x_lo + 15) >> 4, x_hi >> 4, y, &i, &end);
         for (; i < end; ++i) {
             const uint32_t x = ep::x(edges[static_cast<uint16_t>(i)]);
-            const int64_t px = 16 * static_cast<int64_t>(x), py = 16 * static_cast<int64_t>(y);
+            const int32_t px = 16 * static_cast<int32_t>(x), py = 16 * y;
             bool inside = true;
             for (int s = 0; s < 4 && inside; ++s)
-                inside = sign * (dx[s] * (py - cy[s]) - dy[s] * (px - cx[s])) > need[s];
+                inside = sign * (static_cast<int64_t>(dx[s]) * (py - cy[s]) -
+                                 static_cast<int64_t>(dy[s]) * (px - cx[s])) >
+                         need[s];
             if (!inside) continue;
             const uint32_t cell = x >> 1, bit = 1u << (cell & 31u);
             count.cells += (occupied[cell >> 5] & bit) == 0;
@@ -67,8 +73,8 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
 
 bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent) {
     if (limit_percent == 0) return true;
-    return static_cast<uint64_t>(count.cells) * 400u * height <=
-           static_cast<uint64_t>(limit_percent) * count.area_px * 240u;
+    return static_cast<uint64_t>(count.cells) * 400u * isqrt32(uint32_t{height} << 16) <=
+           static_cast<uint64_t>(limit_percent) * count.area_px * isqrt32(240u << 16);
 }
 
 }  // namespace qt

@@ -9,10 +9,12 @@
 // edges (edge_list.h), which leaves such a cell occupied, so the measure does not halve on a
 // busy frame.
 //
-// The share is compared at a common scale: a camera of twice the rows sees the same texture
-// with half the share of cells on an edge (edge length grows with the rows, area with their
-// square), so the limit is stated for a frame 240 rows high and a frame of H rows is held to
-// limit · 240 / H.
+// The share is compared at a common scale. A camera of more rows sees the same texture with a
+// smaller share of cells on an edge (edge length grows with the rows, area with their square),
+// but not by the rows' ratio: a finer grid also resolves texture a coarser one blurs away. On
+// the photo bench (bash bench.sh photos-host, its inside table) the share of the boards and of
+// the photographs' own rectangles both fall by about √2 from 240 rows to 480, so the limit is
+// stated for a frame 240 rows high and a frame of H rows is held to limit · √(240 / H).
 #pragma once
 #include <stdint.h>
 
@@ -35,8 +37,9 @@ struct InteriorCount {
 InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4], q16_16 margin);
 
 // True when the inside is clear: at most limit_percent % of its cells hold an edge point at
-// 240 rows, limit_percent · 240 / height % at `height` rows, i.e.
-// cells · 4 · 100 · height <= limit_percent · area · 240. 0 turns the test off.
+// 240 rows, limit_percent · √(240 / height) % at `height` rows, i.e.
+// cells · 400 · √(height) <= limit_percent · area · √240 (the roots as isqrt of the value
+// · 2^16). 0 turns the test off.
 bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent);
 
 }  // namespace qt

@@ -42,7 +42,7 @@ struct RefineParams {
     bool verify = true;  // false: every candidate is kept, scored by its evidence all the same
     // The inside (quad_interior.h): a kept quadrangle has at most this share of the 2 × 2 px
     // cells inside it holding an edge point farther than inside_margin from its sides, % at
-    // 240 rows (scaled by 240 / rows). 0: not tested (a board showing projected or printed
+    // 240 rows (scaled by √(240 / rows)). 0: not tested (a board showing projected or printed
     // content with strong edges).
     uint8_t max_inside_edge_cells_percent = 16;
     q16_16 inside_margin = q16_16::from_int(4);  // px

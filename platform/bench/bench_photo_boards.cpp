@@ -155,7 +155,7 @@ struct Ours {
         const qt::InteriorCount in = qt::count_inside_edges(
             det.lines().edges(), det.quads()[0].corners, params.refine.inside_margin);
         g_inside_percent =
-            in.area_px == 0 ? 0.0 : 400.0 * in.cells * img.height / (240.0 * in.area_px);
+            in.area_px == 0 ? 0.0 : 400.0 * in.cells * std::sqrt(img.height / 240.0) / in.area_px;
         for (int i = 0; i < 4; ++i)
             c[i] = {det.quads()[0].corners[i].x.raw / 65536.0,
                     det.quads()[0].corners[i].y.raw / 65536.0};

@@ -293,7 +293,7 @@ const FlagTable<DetectOptions, Command>& table() {
                 "max-inside-edges", "PERCENT",
                 "a kept quadrangle has at most this share of the 2x2 px cells inside it holding "
                 "an edge point (farther than --inside-margin from its sides), % at 240 rows, "
-                "scaled by 240 / rows, 0..100 (0: not tested)",
+                "scaled by sqrt(240 / rows), 0..100 (0: not tested)",
                 0, 100,
                 [](DetectOptions& o) -> uint8_t& {
                     return o.params.refine.max_inside_edge_cells_percent;

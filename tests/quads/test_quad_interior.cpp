@@ -77,12 +77,16 @@ TEST_CASE("a turned quadrangle: the margin is measured across each side", "[inte
     CHECK(count_inside_edges(p.list, d, q16_16::from_int(4)).area_px == 800);
 }
 
-TEST_CASE("the limit on the share of cells scales with the frame's rows", "[interior]") {
-    // 16 % of the 400 cells of 1600 px² at 240 rows: 64; at 480 rows 8 %: 32.
+TEST_CASE("the limit on the share of cells scales with the root of the frame's rows",
+          "[interior]") {
+    // 16 % of the 400 cells of 1600 px² at 240 rows: 64; at 480 rows 64 / √2 = 45.25; at 60
+    // rows 64 · 2 = 128.
     CHECK(interior_clear({64, 1600}, 240, 16));
     CHECK(!interior_clear({65, 1600}, 240, 16));
-    CHECK(interior_clear({32, 1600}, 480, 16));
-    CHECK(!interior_clear({33, 1600}, 480, 16));
+    CHECK(interior_clear({45, 1600}, 480, 16));
+    CHECK(!interior_clear({46, 1600}, 480, 16));
+    CHECK(interior_clear({128, 1600}, 60, 16));
+    CHECK(!interior_clear({129, 1600}, 60, 16));
     CHECK(interior_clear({400, 1600}, 240, 0));  // 0: not tested
     CHECK(interior_clear({0, 0}, 240, 16));
 }
