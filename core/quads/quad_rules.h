@@ -42,12 +42,9 @@ struct QuadParams {
     q16_16 max_side_length = q16_16::from_int(2048);
     // Rule 5: the display area's aspect, width / height, and the largest factor by which the
     // measured ratio (mean of top and bottom sides) / (mean of left and right sides) may
-    // differ from it, either way. Perspective alone moves the ratio by up to 1/cos(tilt), and
-    // a board's own aspect may differ from the display's: a 1:1 or 16:9 card against a 4:3
-    // display, tilted 35°, is 1.63 off before the perspective's convergence, which on the photo
-    // bench's boards (bash bench.sh photos-host) took a few beyond 1.8.
+    // differ from it, either way. Perspective alone moves the ratio by up to 1/cos(tilt).
     q16_16 display_aspect = q16_16::from_ratio(4, 3);
-    q16_16 aspect_tolerance = q16_16::from_int(2);
+    q16_16 aspect_tolerance = q16_16::from_ratio(9, 5);
     // Support: each side must be covered by segments over at least this fraction of its length
     // (a quadrangle from four lines whose segments lie elsewhere is not a board). Every line
     // with both ends within collinear_distance pixels of the side's line counts, so a side cut
