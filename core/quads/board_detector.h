@@ -102,9 +102,11 @@ public:
                 ++quad_stats_.rejected_inside;
                 continue;
             }
-            if (!interior_clear(
+            const uint8_t inside_limit = params_.refine.max_inside_edge_cells_percent;
+            if (inside_limit != 0 &&  // 0: the test is off, and nothing is counted
+                !interior_clear(
                     count_inside_edges(lines_.edges(), quad.corners, params_.refine.inside_margin),
-                    lines_.height(), params_.refine.max_inside_edge_cells_percent)) {
+                    lines_.height(), inside_limit)) {
                 ++quad_stats_.rejected_interior;
                 continue;
             }

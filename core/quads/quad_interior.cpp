@@ -21,19 +21,20 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
         const int j = (i + 1) & 3;
         area2 += static_cast<int64_t>(cx[i]) * cy[j] - static_cast<int64_t>(cx[j]) * cy[i];
     }
-    const int64_t sign = area2 < 0 ? -1 : 1;
+    const int32_t sign = area2 < 0 ? -1 : 1;
     count.area_px = static_cast<uint32_t>((area2 < 0 ? -area2 : area2) / 512);
     if (area2 == 0) return count;
     // Side i as a half-plane: inside by more than the margin when
-    // sign · (dx·(y − cy) − dy·(x − cx)) > margin · |d| (all in 1/16 px).
+    // dx·(y − cy) − dy·(x − cx) > margin · |d| (all in 1/16 px), d the side's direction times
+    // the orientation's sign, so that the inside is on the positive side of every one.
     // 32 × 32 → 64-bit products only (one SMULL each on a Cortex-M).
     int32_t dx[4], dy[4];
     int64_t need[4];
     const int64_t margin16 = sixteenths(margin);
     for (int i = 0; i < 4; ++i) {
         const int j = (i + 1) & 3;
-        dx[i] = cx[j] - cx[i];
-        dy[i] = cy[j] - cy[i];
+        dx[i] = sign * (cx[j] - cx[i]);
+        dy[i] = sign * (cy[j] - cy[i]);
         const int64_t len2 =
             static_cast<int64_t>(dx[i]) * dx[i] + static_cast<int64_t>(dy[i]) * dy[i];
         need[i] = margin16 * isqrt64(static_cast<uint64_t>(len2));
@@ -57,8 +58,8 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
             const int32_t px = 16 * static_cast<int32_t>(x), py = 16 * y;
             bool inside = true;
             for (int s = 0; s < 4 && inside; ++s)
-                inside = sign * (static_cast<int64_t>(dx[s]) * (py - cy[s]) -
-                                 static_cast<int64_t>(dy[s]) * (px - cx[s])) >
+                inside = static_cast<int64_t>(dx[s]) * (py - cy[s]) -
+                             static_cast<int64_t>(dy[s]) * (px - cx[s]) >
                          need[s];
             if (!inside) continue;
             const uint32_t cell = x >> 1, bit = 1u << (cell & 31u);
