@@ -185,7 +185,7 @@ public:
             ++stats_->rejected_sides;
             return;
         }
-        if (!rule_aspect(lengths, p_)) {
+        if (!rule_aspect(lengths, opposite_convergence(side_lines), p_)) {
             ++stats_->rejected_aspect;
             return;
         }

@@ -51,14 +51,23 @@ bool rule_side_lengths(const q16_16 sides[4], const QuadParams& p) {
     return true;
 }
 
-bool rule_aspect(const q16_16 sides[4], const QuadParams& p) {
+angle_t opposite_convergence(const Segment* const lines[4]) {
+    const angle_t a = orientation_difference(lines[0]->theta, lines[2]->theta);
+    const angle_t b = orientation_difference(lines[1]->theta, lines[3]->theta);
+    return a > b ? a : b;
+}
+
+bool rule_aspect(const q16_16 sides[4], angle_t convergence, const QuadParams& p) {
     // ratio = w / h with w = s1 + s3, h = s0 + s2 (the halves cancel). Accept when
     // aspect / tol <= w / h <= aspect · tol, i.e. w·tol >= aspect·h and w <= aspect·tol·h.
     // Sides <= 2^15 px (2^31 raw) and aspect, tol <= 2^15: products stay below 2^63 after the
     // q16_16 multiplication shifts.
     const int64_t w = wide(sides[1]) + wide(sides[3]);
     const int64_t h = wide(sides[0]) + wide(sides[2]);
-    const int64_t aspect = wide(p.display_aspect), tol = wide(p.aspect_tolerance);
+    const bool tilted =
+        convergence >= p.perspective_convergence && p.tilted_aspect_tolerance > p.aspect_tolerance;
+    const int64_t aspect = wide(p.display_aspect),
+                  tol = wide(tilted ? p.tilted_aspect_tolerance : p.aspect_tolerance);
     const int64_t aspect_h = (aspect * h) >> 16;  // q16_16
     const int64_t w_tol = (w * tol) >> 16;        // q16_16
     const int64_t aspect_tol_h = (((aspect * tol) >> 16) * h) >> 16;

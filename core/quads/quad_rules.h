@@ -45,6 +45,15 @@ struct QuadParams {
     // differ from it, either way. Perspective alone moves the ratio by up to 1/cos(tilt).
     q16_16 display_aspect = q16_16::from_ratio(4, 3);
     q16_16 aspect_tolerance = q16_16::from_ratio(9, 5);
+    // ... and the larger factor allowed when the quadrangle shows the perspective that a tilt
+    // strong enough for it brings: a pair of opposite sides converging by at least
+    // perspective_convergence. Why: a 1:1 or 16:9 board tilted up to 35° is up to 2.16 off the
+    // 4:3 display (at 25-70 % of the frame; tests/quads/test_quad_rules.cpp samples the poses),
+    // and every such board beyond 1.8 has sides converging by 6° or more at a 53° field of
+    // view (4.5° at 28°); a band cut out of a board by two bars across it, whose edges are
+    // parallel, gets no such allowance. Below aspect_tolerance it is not used.
+    q16_16 tilted_aspect_tolerance = q16_16::from_ratio(11, 5);
+    angle_t perspective_convergence = angle_from_deg(4);
     // Support: each side must be covered by segments over at least this fraction of its length
     // (a quadrangle from four lines whose segments lie elsewhere is not a board). Every line
     // with both ends within collinear_distance pixels of the side's line counts, so a side cut
@@ -79,9 +88,14 @@ bool rule_corners_inside(const Point16 corners[4], uint16_t width, uint16_t heig
 // Rule 4: every side length in [min_side_length, max_side_length].
 bool rule_side_lengths(const q16_16 sides[4], const QuadParams& p);
 // Rule 5: with sides in the corner order above (0 left, 1 bottom, 2 right, 3 top), the ratio
-// (s1 + s3) / (s0 + s2) lies within [display_aspect / aspect_tolerance,
-// display_aspect · aspect_tolerance].
-bool rule_aspect(const q16_16 sides[4], const QuadParams& p);
+// (s1 + s3) / (s0 + s2) lies within [display_aspect / tol, display_aspect · tol], tol the
+// larger of aspect_tolerance and tilted_aspect_tolerance when `convergence` (the larger
+// orientation difference of the two pairs of opposite sides, opposite_convergence) is at least
+// perspective_convergence, aspect_tolerance otherwise.
+bool rule_aspect(const q16_16 sides[4], angle_t convergence, const QuadParams& p);
+// The larger orientation difference of the quadrangle's opposite sides (lines[0] with
+// lines[2], lines[1] with lines[3]), [0, 90°].
+angle_t opposite_convergence(const Segment* const lines[4]);
 
 // Contrast: with corners in any order and side i on line sides[i] (normal sin_cos(theta) in
 // normals[i]), each line's bright_side puts the quadrangle's interior (its corners' mean) on

@@ -199,6 +199,19 @@ const FlagTable<DetectOptions, Command>& table() {
             decimal("aspect-tolerance", "FACTOR",
                     "rule 5: largest factor between the side ratio and the display's, 1..10", 1, 10,
                     [](DetectOptions& o) -> q16_16& { return o.params.quads.aspect_tolerance; }),
+            decimal(
+                "tilted-aspect-tolerance", "FACTOR",
+                "rule 5: the larger factor allowed when opposite sides converge by at least "
+                "--perspective-convergence (a tilted board), 1..10",
+                1, 10,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.tilted_aspect_tolerance; }),
+            degrees("perspective-convergence",
+                    "rule 5: least angle between a pair of opposite sides for "
+                    "--tilted-aspect-tolerance, degrees, 0..90",
+                    0, 90,
+                    [](DetectOptions& o) -> angle_t& {
+                        return o.params.quads.perspective_convergence;
+                    }),
             decimal("min-coverage", "FRACTION",
                     "each side covered by its line's segment at least this much, 0..1", 0, 1,
                     [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_coverage; }),

@@ -41,7 +41,7 @@ struct FlagTable {
         for (const auto& f : flags) {
             if (f.command != every && f.command != c) continue;
             std::string flag = std::string("  --") + f.name + " " + f.value;
-            if (flag.size() < help_column) flag.resize(help_column, ' ');
+            flag.resize(flag.size() < help_column ? help_column : flag.size() + 1, ' ');
             text += flag + f.help + " (default " + f.show(defaults) + ")\n";
         }
         return text;

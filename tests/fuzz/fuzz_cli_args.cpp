@@ -78,6 +78,8 @@ void check_detect(const qt::cli::DetectOptions& o) {
     QT_FUZZ_CHECK(q16_in(q.min_side_length, 0, 2048) && q16_in(q.max_side_length, 1, 2048));
     QT_FUZZ_CHECK(q.min_side_length.raw <= q.max_side_length.raw);
     QT_FUZZ_CHECK(q16_in(q.aspect_tolerance, 1, 10));
+    QT_FUZZ_CHECK(q16_in(q.tilted_aspect_tolerance, 1, 10));
+    QT_FUZZ_CHECK(deg_at_most(q.perspective_convergence, 90));
     QT_FUZZ_CHECK(q16_in(q.min_side_coverage, 0, 1) && q16_in(q.min_score, 0, 1));
     QT_FUZZ_CHECK(q16_in(q.collinear_distance, 0, 100));
     QT_FUZZ_CHECK(q.contrast == qt::Contrast::bright_board ||
