@@ -47,11 +47,11 @@ struct QuadParams {
     q16_16 aspect_tolerance = q16_16::from_ratio(9, 5);
     // ... and the larger factor allowed when the quadrangle shows the perspective that a tilt
     // strong enough for it brings: a pair of opposite sides converging by at least
-    // perspective_convergence. Why: a 1:1 or 16:9 board tilted up to 35° is up to 2.16 off the
-    // 4:3 display (at 25-70 % of the frame; tests/quads/test_quad_rules.cpp samples the poses),
-    // and every such board beyond 1.8 has sides converging by 6° or more at a 53° field of
-    // view (4.5° at 28°); a band cut out of a board by two bars across it, whose edges are
-    // parallel, gets no such allowance. Below aspect_tolerance it is not used.
+    // perspective_convergence. Why: a 1:1 or 16:9 board tilted up to 35° can read beyond 1.8
+    // off the 4:3 display, and its sides then converge (tests/quads/test_quad_rules.cpp samples
+    // the photo bench's poses; the bench prints its boards' factors and convergence), whereas a
+    // band cut out of a board by two bars across it, whose edges are parallel, gets no such
+    // allowance. Below aspect_tolerance it is not used.
     q16_16 tilted_aspect_tolerance = q16_16::from_ratio(11, 5);
     angle_t perspective_convergence = angle_from_deg(4);
     // Support: each side must be covered by segments over at least this fraction of its length

@@ -3,7 +3,8 @@
 // a folder (Debian's opencv-doc samples, converted to PNM by the build), at QVGA and VGA, in three
 // sets — unoccluded, one side partly hidden by a dark disc or arm, no board — with OpenCV's
 // squares.cpp recipe on the same frames when it was built in; then a 150-frame sequence of a board
-// moving, turning and scaling in front of a photograph, tracked.
+// moving, turning and scaling in front of a photograph, tracked. Also how far the boards' true
+// corners read from the display aspect (rule 5) and how much their opposite sides converge.
 //
 // Detected: every corner of the best quadrangle, in the order returned, within kHitPx of the
 // truth. Corner RMSE over the detected boards' corners. A false detection: any quadrangle on a
@@ -55,6 +56,48 @@ std::vector<Photo> load_photos(const std::string& dir) {
     }
     return photos;
 }
+
+// Rule 5 on a board's true corners, in detect_quads' order (the smallest x + y first): the
+// factor between (s1 + s3) / (s0 + s2) and the display aspect, and the larger angle between
+// the two pairs of opposite sides, degrees.
+struct AspectReading {
+    double factor, convergence_deg;
+};
+
+AspectReading read_aspect(const sc::Point2 truth[4], double display_aspect) {
+    int first = 0;
+    for (int k = 1; k < 4; ++k)
+        if (truth[k].x + truth[k].y < truth[first].x + truth[first].y) first = k;
+    double len[4], dir[4];
+    for (int k = 0; k < 4; ++k) {
+        const sc::Point2 a = truth[(first + k) & 3], b = truth[(first + k + 1) & 3];
+        len[k] = std::hypot(b.x - a.x, b.y - a.y);
+        dir[k] = std::atan2(b.y - a.y, b.x - a.x) * 180.0 / 3.14159265358979323846;
+    }
+    auto apart = [](double a, double b) {  // orientation difference, [0, 90]
+        double d = std::fmod(std::fabs(a - b), 180.0);
+        return d > 90.0 ? 180.0 - d : d;
+    };
+    const double ratio = (len[1] + len[3]) / (len[0] + len[2]);
+    return {std::max(ratio / display_aspect, display_aspect / ratio),
+            std::max(apart(dir[0], dir[2]), apart(dir[1], dir[3]))};
+}
+
+// Per size and board aspect: how far the unoccluded boards' true corners read from the
+// display aspect, and how much the sides of those beyond aspect_tolerance converge.
+struct AspectSpread {
+    int boards = 0, beyond = 0, beyond_tilted = 0;
+    double worst = 0, least_convergence = 90;
+    void add(const AspectReading& r, const qt::QuadParams& q) {
+        ++boards;
+        worst = std::max(worst, r.factor);
+        if (r.factor > q.aspect_tolerance.raw / 65536.0) {
+            ++beyond;
+            least_convergence = std::min(least_convergence, r.convergence_deg);
+        }
+        if (r.factor > q.tilted_aspect_tolerance.raw / 65536.0) ++beyond_tilted;
+    }
+};
 
 double corner_error(const Corners& c, const sc::Point2 truth[4], double* rms) {
     double worst = 0, sq = 0;
@@ -377,8 +420,10 @@ int main(int argc, char** argv) {
         "| method | size | set | scenes | detected | corner RMSE px | false detections | "
         "capacity_exceeded | "
         "median ms | worst ms |\n|---|---|---|---|---|---|---|---|---|---|\n");
-    std::string inside_lines;
+    std::string inside_lines, aspect_lines;
+    const double display_aspect = options.params.quads.display_aspect.raw / 65536.0;
     for (const Size& sz : sizes) {
+        AspectSpread spreads[3];  // boards of aspect 1:1, 4:3, 16:9
         for (const Method& m : methods) {
             for (const Set& set : sets) {
                 Tally t;
@@ -399,6 +444,11 @@ int main(int argc, char** argv) {
                     const double ms =
                         std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
                     const char* failure = t.add(s, found, c, capacity, ms);
+                    if (&m == &methods[0] && set.board && !set.occlude)
+                        spreads[s.aspect < 1.2   ? 0
+                                : s.aspect < 1.5 ? 1
+                                                 : 2]
+                            .add(read_aspect(s.corners, display_aspect), options.params.quads);
                     if (found && &m == &methods[0])
                         (*failure ? inside_others : inside_boards).push_back(g_inside_percent);
                     if (list_failures && *failure)
@@ -425,6 +475,17 @@ int main(int argc, char** argv) {
                                     spread(inside_boards) + " | " + spread(inside_others) + " |\n";
             }
         }
+        const char* aspect_names[3] = {"1:1", "4:3", "16:9"};
+        for (int a = 0; a < 3; ++a) {
+            const AspectSpread& sp = spreads[a];
+            char convergence[16] = "-", line[200];
+            if (sp.beyond > 0)
+                std::snprintf(convergence, sizeof convergence, "%.1f", sp.least_convergence);
+            std::snprintf(line, sizeof line, "| %s | %s | %d | %.2f | %d | %s | %d |\n", sz.name,
+                          aspect_names[a], sp.boards, sp.worst, sp.beyond, convergence,
+                          sp.beyond_tilted);
+            aspect_lines += line;
+        }
     }
     std::printf(
         "\n2x2 px cells inside the reported quadrangle holding an edge point, %% at 240 rows "
@@ -432,6 +493,18 @@ int main(int argc, char** argv) {
         "| "
         "another quadrangle |\n|---|---|---|---|\n%s",
         options.params.refine.max_inside_edge_cells_percent, inside_lines.c_str());
+    std::printf(
+        "\nRule 5 on the unoccluded boards' true corners against the display aspect %.3f: the "
+        "factor off it, and the least convergence (larger angle between opposite sides) of "
+        "those beyond --aspect-tolerance %.2f, which --tilted-aspect-tolerance %.2f needs >= "
+        "--perspective-convergence %.1f deg\n| size | board | boards | largest factor | "
+        "beyond %.2f | their least convergence, deg | beyond %.2f |\n|---|---|---|---|---|---|---|"
+        "\n%s",
+        display_aspect, options.params.quads.aspect_tolerance.raw / 65536.0,
+        options.params.quads.tilted_aspect_tolerance.raw / 65536.0,
+        qt::angle_to_deg(options.params.quads.perspective_convergence).raw / 65536.0,
+        options.params.quads.aspect_tolerance.raw / 65536.0,
+        options.params.quads.tilted_aspect_tolerance.raw / 65536.0, aspect_lines.c_str());
     if (sequence) {
         std::printf(
             "\n| sequence | size | photograph | frames | tracked within %.0f px RMS | while a side "
