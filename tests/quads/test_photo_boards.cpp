@@ -54,6 +54,16 @@ const std::vector<io::NamedImage>& photos() {
     return loaded;
 }
 
+// Scene k of the photo bench's unoccluded set (bash bench.sh photos-host: its seed and
+// photograph) at width × height.
+scene::PhotoBoardScene unoccluded_bench_scene(int k, int width, int height) {
+    scene::PhotoBoardOptions o;
+    o.width = width;
+    o.height = height;
+    const auto& photo = photos()[static_cast<size_t>(k) % photos().size()].image;
+    return scene::make_photo_board_scene(o, photo, 1000000 + static_cast<uint64_t>(k));
+}
+
 struct Tally {
     int scenes = 0, detected = 0, quads = 0, corners = 0;
     double sum_sq = 0;
@@ -134,12 +144,7 @@ TEST_CASE("boards whose sides are weaker than the photograph's edges keep them i
     // each (the bench at commit 887dedd listed them as missed). Thinned, every other step of
     // the faint sides stays (lines/edge_list.h).
     for (const int k : {84, 108, 176, 584, 608, 1352}) {
-        scene::PhotoBoardOptions o;
-        o.width = 320;
-        o.height = 240;
-        const auto& photo = photos()[static_cast<size_t>(k) % photos().size()].image;
-        const scene::PhotoBoardScene s =
-            scene::make_photo_board_scene(o, photo, 1000000 + static_cast<uint64_t>(k));
+        const scene::PhotoBoardScene s = unoccluded_bench_scene(k, 320, 240);
         INFO("scene " << k);
         CHECK(worst_corner(g_qvga, s.image, s.corners) <= 3);
         CHECK(g_qvga.lines().edges().thin_level() > g_qvga.lines().edges().floor());
@@ -154,12 +159,7 @@ TEST_CASE("a square board tilted past rule 5's tolerance is found by its converg
     BoardParams no_allowance;
     no_allowance.quads.perspective_convergence = kAngleQuarterTurn + 1;  // never reached
     for (const int k : {963, 1389}) {
-        scene::PhotoBoardOptions o;
-        o.width = 640;
-        o.height = 480;
-        const auto& photo = photos()[static_cast<size_t>(k) % photos().size()].image;
-        const scene::PhotoBoardScene s =
-            scene::make_photo_board_scene(o, photo, 1000000 + static_cast<uint64_t>(k));
+        const scene::PhotoBoardScene s = unoccluded_bench_scene(k, 640, 480);
         INFO("scene " << k);
         CHECK(worst_corner(g_vga, s.image, s.corners) <= 3);
         CHECK(worst_corner(g_vga, s.image, s.corners, nullptr, no_allowance) > 3);
