@@ -13,17 +13,13 @@ int32_t sixteenths(q16_16 v) { return v.raw >> 12; }
 
 InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4], q16_16 margin) {
     InteriorCount count;
+    // Twice the signed area (quad_rules.h, q16.16² raw: 2^32 a px²); its sign is the orientation.
+    const int64_t area2 = shoelace2(corners);
+    if (area2 == 0) return count;
+    const int32_t sign = area2 < 0 ? -1 : 1;
+    count.area_px = static_cast<uint32_t>((area2 < 0 ? -area2 : area2) >> 33);
     int32_t cx[4], cy[4];
     for (int i = 0; i < 4; ++i) cx[i] = sixteenths(corners[i].x), cy[i] = sixteenths(corners[i].y);
-    // Twice the signed area, (1/16 px)²: its sign is the orientation.
-    int64_t area2 = 0;
-    for (int i = 0; i < 4; ++i) {
-        const int j = (i + 1) & 3;
-        area2 += static_cast<int64_t>(cx[i]) * cy[j] - static_cast<int64_t>(cx[j]) * cy[i];
-    }
-    const int32_t sign = area2 < 0 ? -1 : 1;
-    count.area_px = static_cast<uint32_t>((area2 < 0 ? -area2 : area2) / 512);
-    if (area2 == 0) return count;
     // Side i as a half-plane: inside by more than the margin when
     // dx·(y − cy) − dy·(x − cx) > margin · |d| (all in 1/16 px), d the side's direction times
     // the orientation's sign, so that the inside is on the positive side of every one.
