@@ -216,6 +216,12 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                 "max-unseen", "FRAMES", "lost after this many frames without a match, 1..65535", 1,
                 65535, [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
             integer<uint16_t>(
+                "coast-fit", "FRAMES",
+                "leaving the image, the estimate coasts on the least-squares line through the "
+                "measurements of this many last frames, 0..63 (0: the filter's velocity)",
+                0, TargetTracker::kMaxCoastFitFrames,
+                [](TargetOptions& o) -> uint16_t& { return o.config.tracker.coast_fit_frames; }),
+            integer<uint16_t>(
                 "search-radius", "PX",
                 "corner matching: candidates within this of the expected position, px, 1..128", 1,
                 128,

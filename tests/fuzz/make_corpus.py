@@ -117,7 +117,7 @@ def cli():
                                        "--gate-distance=1000", "--max-predicted=255"))
     target = ["--roi", "100,80,16,16", "--method", "fused", "--reset", "on", "--q-pos", "20", "--q-vel", "1",
               "--r", "4", "--gate-nds", "9.21", "--gate-rep", "1.5", "--reset-nds", "5.99", "--reset-det-s", "2500",
-              "--min-score", "0.7", "--max-radius", "24", "--max-unseen", "400", "--search-radius", "24",
+              "--min-score", "0.7", "--max-radius", "24", "--max-unseen", "400", "--coast-fit", "32", "--search-radius", "24",
               "--min-match", "0.8", "--inlier-px", "2", "--max-iterations", "1000", "--seed", "1", "ground.y4m"]
     write(t, "target_every_flag", argv(*target))
     write(t, "target_roi_limits", argv("--roi=-100000,100000,24,1", "--method=template_only", "--reset=off",

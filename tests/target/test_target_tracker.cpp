@@ -374,6 +374,105 @@ TEST_CASE(
     CHECK(copy.accumulated().m[2] == -2.0f);
 }
 
+// The line a leaving target coasts on, in double: least squares x = a + b·k over the samples
+// (frame k, x) of the window's frames (coast frame − window .. coast frame), evaluated at frame k.
+struct RefLine {
+    double ax = 0, bx = 0, ay = 0, by = 0;
+    RefLine(const std::vector<int>& frames, const std::vector<double>& xs,
+            const std::vector<double>& ys, int coast_frame, int window) {
+        double n = 0, sk = 0, sx = 0, sy = 0;
+        for (size_t i = 0; i < frames.size(); ++i)
+            if (coast_frame - frames[i] <= window) {
+                n += 1;
+                sk += frames[i];
+                sx += xs[i];
+                sy += ys[i];
+            }
+        const double km = sk / n, xm = sx / n, ym = sy / n;
+        double skk = 0, skx = 0, sky = 0;
+        for (size_t i = 0; i < frames.size(); ++i)
+            if (coast_frame - frames[i] <= window) {
+                skk += (frames[i] - km) * (frames[i] - km);
+                skx += (frames[i] - km) * (xs[i] - xm);
+                sky += (frames[i] - km) * (ys[i] - ym);
+            }
+        bx = skx / skk;
+        by = sky / skk;
+        ax = xm - bx * km;
+        ay = ym - by * km;
+    }
+    double x(int k) const { return ax + bx * k; }
+    double y(int k) const { return ay + by * k; }
+};
+
+TEST_CASE(
+    "TargetTracker fused: a target leaving the image coasts on the least-squares line "
+    "through its last measurements",
+    "[target]") {
+    // The camera moves the ground +2 px a frame in x; the target drives over the ground at
+    // (1.5, 0.5) px a frame, so in the image it moves (3.5, 0.5) from (120, 100). Frames 1..50
+    // measure it with a deterministic zero-mean error (±0.6 px in x alternating, −0.4/0/+0.4 in
+    // y); then nothing. Every measurement is in the image the filter lives in after its reset, so
+    // the reference line is fitted in frame coordinates with the ground motion taken out: the
+    // target's ground track in the image of frame 0 is (120 + 1.5k, 100 + 0.5k).
+    const TargetTrackerParams params;  // defaults: coast_fit_frames 32
+    auto run = [&](uint16_t window, std::vector<int>* frames, std::vector<double>* gx,
+                   std::vector<double>* gy, std::vector<TargetEstimate>* out) {
+        TargetTrackerParams p = params;
+        p.coast_fit_frames = window;
+        TargetTracker t;
+        t.init(120, 100, 320, 240, p);
+        frames->assign(1, 0);
+        gx->assign(1, 120.0);
+        gy->assign(1, 100.0);
+        for (int k = 1; k <= 110; ++k) {
+            t.predict(geometry(translation(2, 0)));
+            if (k <= 50) {
+                const double nx = (k % 2 == 0 ? 0.6 : -0.6), ny = 0.4 * (k % 3 - 1);
+                const double zx = 120 + 3.5 * k + nx, zy = 100 + 0.5 * k + ny;
+                const TargetEstimate e =
+                    t.update(seen(static_cast<float>(zx), static_cast<float>(zy)));
+                REQUIRE(e.state == TargetState::measured);
+                frames->push_back(k);
+                gx->push_back(zx - 2.0 * k);  // the ground track: camera motion taken out
+                gy->push_back(zy);
+            } else {
+                out->push_back(t.update(kNone));
+            }
+        }
+    };
+    std::vector<int> frames;
+    std::vector<double> gx, gy;
+    std::vector<TargetEstimate> coasted, kalman;
+    run(params.coast_fit_frames, &frames, &gx, &gy, &coasted);
+    run(0, &frames, &gx, &gy, &kalman);
+    // The estimate leaves the image (x >= 319.5) near frame 56; from that frame on it lies on
+    // the reference line fitted there, carried into the frame by the ground's motion.
+    int coast = -1;
+    for (size_t i = 0; i < coasted.size() && coast < 0; ++i)
+        if (coasted[i].state == TargetState::out_of_view) coast = static_cast<int>(i) + 51;
+    REQUIRE(coast > 51);
+    const RefLine line(frames, gx, gy, coast, params.coast_fit_frames);
+    double worst_coasted = 0, worst_kalman = 0;
+    for (int k = coast; k <= 110; ++k) {
+        const TargetEstimate& e = coasted[static_cast<size_t>(k - 51)];
+        INFO("frame " << k);
+        CHECK(e.x == Approx(line.x(k) + 2.0 * k).margin(2e-3));
+        CHECK(e.y == Approx(line.y(k)).margin(2e-3));
+        const double tx = 120 + 3.5 * k, ty = 100 + 0.5 * k;
+        worst_coasted = std::max(worst_coasted, std::hypot(e.x - tx, e.y - ty));
+        const TargetEstimate& f = kalman[static_cast<size_t>(k - 51)];
+        worst_kalman = std::max(worst_kalman, std::hypot(f.x - tx, f.y - ty));
+    }
+    // The line through 32 frames of measurements against the filter's own velocity: the
+    // measurement error hardly moves the line, while the filter's velocity follows the last
+    // measurements' errors (Q's 1 px²/frame² lets it).
+    INFO("worst error out of view: coasting " << worst_coasted << " px, the filter's velocity "
+                                              << worst_kalman << " px");
+    CHECK(worst_coasted < 1.0);
+    CHECK(worst_kalman > 2 * worst_coasted);
+}
+
 TEST_CASE("TargetTracker fused with the default parameters resets on a perfect measurement",
           "[target]") {
     // Table III: reset when D_nds and det S are "reasonably small". Defaults: Q = diag(20, 20,

@@ -50,6 +50,12 @@ public:
         x_[1] = y;
     }
 
+    // Sets the velocity to (vx, vy), px/frame; position and covariance unchanged.
+    void set_velocity(float vx, float vy) {
+        x_[2] = vx;
+        x_[3] = vy;
+    }
+
     float x() const { return x_[0]; }
     float y() const { return x_[1]; }
     float vx() const { return x_[2]; }

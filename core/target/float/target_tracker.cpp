@@ -70,6 +70,10 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     last_y_ = y;
     ref_x_ = x;
     ref_y_ = y;
+    history_start_ = 0;
+    history_count_ = 0;
+    frame_ = 0;
+    remember(x, y);
     for (int i = 0; i < 4; ++i) {
         roi_x_[i] = x;
         roi_y_[i] = y;
@@ -113,6 +117,7 @@ void TargetTracker::position(float& x, float& y) const {
 SearchWindow TargetTracker::predict(const FrameGeometry& g) {
     SearchWindow w;
     if (state_ == TargetState::lost) return w;
+    ++frame_;
     switch (params_.method) {
         case TargetMethod::template_only:
             w.x = last_x_;
@@ -263,11 +268,11 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     }
     bool accepted = false;
     Innovation in;
+    float zx = m.x, zy = m.y;
     const bool uses_measurements = params_.method != TargetMethod::homography_only;
     const bool geometry_needed = params_.method == TargetMethod::fused;
     if (found && uses_measurements && (geometry_ok_ || !geometry_needed)) {
         // The measurement in the reference image: A⁻¹ z (equation (10)).
-        float zx = m.x, zy = m.y;
         Homography inv;
         const bool mapped =
             paper || (invert_homography(acc_, inv) && apply_homography(inv, m.x, m.y, zx, zy));
@@ -281,8 +286,10 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         kf_.update(in);
         state_ = unseen_ > 0 ? TargetState::reacquired : TargetState::measured;
         unseen_ = 0;
+        remember(zx, zy);
         if (params_.method == TargetMethod::fused && params_.reset && in.nds <= params_.reset_nds &&
             e.det_s <= params_.reset_det_s && (paper || kf_.change_frame(acc_))) {
+            if (!paper) carry_history(acc_);
             acc_ = Homography{};  // Table III: the accumulation starts again at this frame
             ref_x_ = kf_.x();     // x_m of equation (11), m = this frame
             ref_y_ = kf_.y();
@@ -295,6 +302,10 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         // follows it (re-initialised there when the target returns).
         if (paper && apply_homography(acc_, ref_x_, ref_y_, x, y)) kf_.set_position(x, y);
         position(x, y);
+        // Leaving the image: the estimate coasts on the line through the last measurements.
+        if (!in_image(x, y) && state_ != TargetState::out_of_view && !paper &&
+            params_.method == TargetMethod::fused && coast_from_history())
+            position(x, y);
         state_ = in_image(x, y) ? TargetState::predicted : TargetState::out_of_view;
         const bool geometry_gone =
             params_.method != TargetMethod::filter_only &&
@@ -305,6 +316,58 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     e.state = state_;
     e.unseen = unseen_;
     return e;
+}
+
+void TargetTracker::remember(float x, float y) {
+    const uint16_t slot = static_cast<uint16_t>((history_start_ + history_count_) % kHistory);
+    history_[slot] = Sample{x, y, frame_};
+    if (history_count_ < kHistory)
+        ++history_count_;
+    else
+        history_start_ = static_cast<uint16_t>((history_start_ + 1u) % kHistory);
+}
+
+void TargetTracker::carry_history(const Homography& h) {
+    for (uint16_t i = 0; i < history_count_; ++i) {
+        Sample& s = history_[(history_start_ + i) % kHistory];
+        float xo, yo;
+        if (apply_homography(h, s.x, s.y, xo, yo)) {
+            s.x = xo;
+            s.y = yo;
+        }
+    }
+}
+
+bool TargetTracker::coast_from_history() {
+    const uint32_t window = params_.coast_fit_frames < kMaxCoastFitFrames ? params_.coast_fit_frames
+                                                                          : kMaxCoastFitFrames;
+    if (window == 0) return false;
+    // x = a + b·(t − t̄) by least squares over the window's samples, t in frames from now (≤ 0).
+    float n = 0, st = 0, sx = 0, sy = 0;
+    for (uint16_t i = 0; i < history_count_; ++i) {
+        const Sample& s = history_[(history_start_ + i) % kHistory];
+        if (frame_ - s.frame > window) continue;
+        n += 1;
+        st -= static_cast<float>(frame_ - s.frame);
+        sx += s.x;
+        sy += s.y;
+    }
+    if (n < static_cast<float>(kMinCoastSamples)) return false;
+    const float tm = st / n, xm = sx / n, ym = sy / n;
+    float stt = 0, stx = 0, sty = 0;
+    for (uint16_t i = 0; i < history_count_; ++i) {
+        const Sample& s = history_[(history_start_ + i) % kHistory];
+        if (frame_ - s.frame > window) continue;
+        const float t = -static_cast<float>(frame_ - s.frame) - tm;
+        stt += t * t;
+        stx += t * (s.x - xm);
+        sty += t * (s.y - ym);
+    }
+    if (!(stt > 0)) return false;
+    const float bx = stx / stt, by = sty / stt;
+    kf_.set_position(xm - bx * tm, ym - by * tm);  // the line at t = 0: this frame
+    kf_.set_velocity(bx, by);
+    return true;
 }
 
 }  // namespace qt

@@ -115,6 +115,14 @@ struct TargetTrackerParams {
     uint16_t max_bad_geometry =
         15;                  // lost after this many untrustworthy homographies in a row, unseen
     float max_scale = 4.0f;  // lost when A scales the area at the estimate beyond max_scale²
+    // Coasting out of view (fused, reference formulation): when the estimate leaves the image,
+    // its position and velocity become the least-squares line through the accepted
+    // measurements of the last coast_fit_frames frames (at least 8 of them, in the reference
+    // image), frames; 0..kMaxCoastFitFrames. The filter's velocity follows the last few
+    // measurements' errors (the paper's Q lets it), and out of view they grow with every
+    // frame; the line through many measurements hardly moves with them. 0: the filter's
+    // velocity (the paper).
+    uint16_t coast_fit_frames = 32;
 };
 
 // The frame's camera motion: the homography from the previous frame's image into this one.
@@ -171,6 +179,9 @@ public:
     // Second half: the search result (found == false when nothing matched well enough).
     TargetEstimate update(const TargetMeasurement& m);
 
+    // The most frames the coasting line is fitted over (the measurements kept).
+    static constexpr uint16_t kMaxCoastFitFrames = 63;
+
     TargetState state() const { return state_; }
     const TargetTrackerParams& params() const { return params_; }
     const Homography& accumulated() const { return acc_; }
@@ -198,6 +209,21 @@ private:
     uint16_t unseen_ = 0;
     uint16_t bad_geometry_ = 0;
     float last_x_ = 0, last_y_ = 0;  // template_only: the last match
+    // The accepted measurements of the last frames, in the reference image (A⁻¹ z, carried by
+    // A at each reset), oldest first from history_start_ (a ring), with their frame.
+    static constexpr uint16_t kHistory = kMaxCoastFitFrames + 1;
+    static constexpr uint16_t kMinCoastSamples = 8;
+    struct Sample {
+        float x, y;
+        uint32_t frame;
+    };
+    Sample history_[kHistory] = {};
+    uint16_t history_start_ = 0, history_count_ = 0;
+    uint32_t frame_ = 0;  // frames predicted since init
+    void remember(float x, float y);
+    void carry_history(const Homography& h);
+    // Puts the filter on the coasting line; false (filter unchanged) with too few samples.
+    bool coast_from_history();
 };
 
 }  // namespace qt
