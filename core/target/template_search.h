@@ -32,14 +32,15 @@ struct PixelRegion {
 struct TemplateHit {
     bool found = false;  // at least one candidate centre had the whole template inside the region
     int32_t x_q8 = 0,
-            y_q8 = 0;        // best template centre, 1/256 px (parabolic sub-pixel fit on the NCC)
+            y_q8 = 0;        // best template centre, 1/256 px (sub-pixel: the quadratic surface
+                             // fitted to the 3 × 3 NCC scores about the best, template_search.cpp)
     int16_t score_q15 = 0;   // its NCC, Q15
     uint32_t positions = 0;  // candidate centres scored
 };
 
 // Scores every template placement whose centre lies within ±radius px (per axis) of
 // (cx, cy) and whose pixels all lie in the region; keeps the best NCC (ties: the first in
-// row-major order, so every platform agrees). Work: positions · w · h · 3 multiply-adds. A
+// row-major order, so every platform agrees). Work: (positions + 8) · w · h · 3 multiply-adds. A
 // template of more than kNccMaxPixels pixels finds nothing.
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
                             int32_t cx, int32_t cy, uint16_t radius);
