@@ -89,11 +89,12 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     if (hit.positions == 0) return hit;
     hit.found = true;
     hit.score_q15 = static_cast<int16_t>(best);
-    // Sub-pixel: the 2-D quadratic through the 3 × 3 scores about the best when they are all
+    // Sub-pixel: one Newton step on the 3 × 3 scores about the best when they are all
     // candidates and make a maximum (a peak elongated across the axes moves both coordinates,
     // which parabolas along the best row and column miss); else a parabola along each axis
     // with both neighbours (0 without).
-    const bool inside_x = bu > u0 && bu<u1, inside_y = bv> v0 && bv < v1;
+    const bool inside_x = (bu > u0) && (bu < u1);
+    const bool inside_y = (bv > v0) && (bv < v1);
     int32_t dx = 0, dy = 0;
     bool fitted = false;
     if (inside_x && inside_y) {

@@ -32,8 +32,8 @@ struct PixelRegion {
 struct TemplateHit {
     bool found = false;  // at least one candidate centre had the whole template inside the region
     int32_t x_q8 = 0,
-            y_q8 = 0;        // best template centre, 1/256 px (sub-pixel: the quadratic surface
-                             // fitted to the 3 × 3 NCC scores about the best, template_search.cpp)
+            y_q8 = 0;        // best template centre, 1/256 px (sub-pixel: one Newton step on the
+                             // 3 × 3 NCC scores about the best, template_search.cpp)
     int16_t score_q15 = 0;   // its NCC, Q15
     uint32_t positions = 0;  // candidate centres scored
 };
