@@ -1,5 +1,7 @@
 #include "target/template_search.h"
 
+#include "base/fixed.h"  // div_round_half_away
+
 namespace qt {
 
 namespace {
@@ -14,13 +16,6 @@ int32_t vertex_q8(int32_t a, int32_t b, int32_t c) {
     return v < -128 ? -128 : v > 128 ? 128 : v;
 }
 
-// round(256·num / den), half away from zero; den > 0.
-int32_t q8_ratio(int64_t num, int64_t den) {
-    const int64_t n = 256 * (num < 0 ? -num : num);
-    const int64_t q = (n + den / 2) / den;
-    return static_cast<int32_t>(num < 0 ? -q : q);
-}
-
 // The peak of the quadratic surface through the 3 × 3 scores s[y + 1][x + 1] about the best
 // (x, y in −1..1) with the derivatives at the best by central differences: one Newton step
 // −H⁻¹∇ with ∇ = (b, c), 2b = s(1, 0) − s(−1, 0), H = [2d e; e 2g], 2d = s(1, 0) − 2s(0, 0) +
@@ -29,7 +24,7 @@ int32_t q8_ratio(int64_t num, int64_t den) {
 // multiplied by 4 so that every term is an integer: p = 8d, q = 4e, r = 8g, u = −4b, v = −4c.
 // False (nothing written) when the surface has no maximum (p >= 0 or p·r − q² <= 0). Scores
 // are Q15: |p|, |q|, |r|, |u|, |v| < 2^19, so the products stay below 2^39, and 256 times
-// them below 2^47.
+// them below 2^47 (div_round_half_away takes up to 2^62).
 bool vertex_2d_q8(const int32_t s[3][3], int32_t* dx, int32_t* dy) {
     const int64_t b2 = int64_t{s[1][2]} - s[1][0], c2 = int64_t{s[2][1]} - s[0][1];
     const int64_t d2 = int64_t{s[1][2]} - 2 * s[1][1] + s[1][0];
@@ -38,9 +33,10 @@ bool vertex_2d_q8(const int32_t s[3][3], int32_t* dx, int32_t* dy) {
     const int64_t p = 4 * d2, r = 4 * g2, q = e4, u = -2 * b2, v = -2 * c2;
     const int64_t det = p * r - q * q;
     if (p >= 0 || det <= 0) return false;
-    const int32_t x = q8_ratio(u * r - q * v, det), y = q8_ratio(p * v - q * u, det);
-    *dx = x < -128 ? -128 : x > 128 ? 128 : x;
-    *dy = y < -128 ? -128 : y > 128 ? 128 : y;
+    const int64_t x = div_round_half_away(256 * (u * r - q * v), det);
+    const int64_t y = div_round_half_away(256 * (p * v - q * u), det);
+    *dx = static_cast<int32_t>(x < -128 ? -128 : x > 128 ? 128 : x);
+    *dy = static_cast<int32_t>(y < -128 ? -128 : y > 128 ? 128 : y);
     return true;
 }
 
@@ -95,18 +91,20 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     // with both neighbours (0 without).
     const bool inside_x = (bu > u0) && (bu < u1);
     const bool inside_y = (bv > v0) && (bv < v1);
+    // The scores about the best that are candidates, s3[y + 1][x + 1]: each scored once.
+    int32_t s3[3][3] = {};
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            const bool need = (i == 1 || inside_x) && (j == 1 || inside_y);
+            if (i == 1 && j == 1)
+                s3[j][i] = best;
+            else if (need)
+                s3[j][i] = score(bu + i - 1, bv + j - 1);
+        }
     int32_t dx = 0, dy = 0;
-    bool fitted = false;
-    if (inside_x && inside_y) {
-        int32_t s3[3][3];
-        for (int j = 0; j < 3; ++j)
-            for (int i = 0; i < 3; ++i)
-                s3[j][i] = i == 1 && j == 1 ? best : score(bu + i - 1, bv + j - 1);
-        fitted = vertex_2d_q8(s3, &dx, &dy);
-    }
-    if (!fitted) {
-        dx = inside_x ? vertex_q8(score(bu - 1, bv), best, score(bu + 1, bv)) : 0;
-        dy = inside_y ? vertex_q8(score(bu, bv - 1), best, score(bu, bv + 1)) : 0;
+    if (!(inside_x && inside_y && vertex_2d_q8(s3, &dx, &dy))) {
+        dx = inside_x ? vertex_q8(s3[1][0], best, s3[1][2]) : 0;
+        dy = inside_y ? vertex_q8(s3[0][1], best, s3[2][1]) : 0;
     }
     hit.x_q8 = bu * 256 + (tw - 1) * 128 + dx;
     hit.y_q8 = bv * 256 + (th - 1) * 128 + dy;
