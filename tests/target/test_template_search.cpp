@@ -166,6 +166,77 @@ bool newton_peak(F&& f, int u, int v, double* px, double* py) {
     return true;
 }
 
+TEST_CASE("search_template's best is that of ncc_q15 at every candidate and ties go to the first",
+          "[template]") {
+    // The reference: every candidate scored on its own by ncc_q15 (sums pixel by pixel), the
+    // best the largest score, the first in row-major order among equals. Textures: random
+    // noise, and a pattern of period 4 × 3 whose repeats score alike (ties). Templates up to
+    // 31 wide (the search's column sums) and 40 × 3 (scored candidate by candidate); regions
+    // wider than a strip of 64 columns and offset in the frame; windows that clip.
+    Pcg32 rng(2026);
+    int ties = 0, cases = 0;
+    for (int k = 0; k < 300; ++k) {
+        const int w = 40 + static_cast<int>(rng.below(100)),
+                  h = 30 + static_cast<int>(rng.below(40));
+        const bool periodic = k % 3 == 0;
+        std::vector<uint8_t> img(static_cast<size_t>(w * h));
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                img[static_cast<size_t>(y * w + x)] =
+                    periodic ? static_cast<uint8_t>(((x % 4) * 53 + (y % 3) * 71) % 256)
+                             : static_cast<uint8_t>(rng.below(256));
+        const bool wide = k % 10 == 1;
+        const int tw = wide ? 40 : 1 + static_cast<int>(rng.below(31)),
+                  th = wide ? 3 : 1 + static_cast<int>(rng.below(std::min(31, h - 1)));
+        if (tw >= w || th >= h) continue;
+        const int x0 = static_cast<int>(rng.below(4)), y0 = static_cast<int>(rng.below(4));
+        const PixelRegion region = part(img, w, x0, y0, w - x0, h - y0);
+        std::vector<uint8_t> tpl(static_cast<size_t>(tw * th));
+        const int tx = x0 + static_cast<int>(rng.below(static_cast<uint32_t>(w - x0 - tw + 1)));
+        const int ty = y0 + static_cast<int>(rng.below(static_cast<uint32_t>(h - y0 - th + 1)));
+        for (int y = 0; y < th; ++y)
+            for (int x = 0; x < tw; ++x)
+                tpl[static_cast<size_t>(y * tw + x)] = static_cast<uint8_t>(std::min(
+                    255u, img[static_cast<size_t>((ty + y) * w + tx + x)] + rng.below(20)));
+        const int32_t cx = static_cast<int32_t>(rng.below(static_cast<uint32_t>(w))),
+                      cy = static_cast<int32_t>(rng.below(static_cast<uint32_t>(h)));
+        const uint16_t radius = static_cast<uint16_t>(rng.below(45));
+        const TemplateHit hit = search_template(tpl.data(), static_cast<uint8_t>(tw),
+                                                static_cast<uint8_t>(th), region, cx, cy, radius);
+        int32_t best = INT32_MIN, bu = 0, bv = 0, equal = 0;
+        uint32_t positions = 0;
+        const int32_t uc = cx - (tw - 1) / 2, vc = cy - (th - 1) / 2;
+        for (int32_t v = std::max(vc - radius, y0); v <= std::min(vc + radius, h - th); ++v)
+            for (int32_t u = std::max(uc - radius, x0); u <= std::min(uc + radius, w - tw); ++u) {
+                const int32_t q = ncc_q15(tpl.data(), static_cast<uint32_t>(tw),
+                                          img.data() + v * w + u, static_cast<uint32_t>(w),
+                                          static_cast<uint16_t>(tw), static_cast<uint16_t>(th))
+                                      .q15;
+                ++positions;
+                equal += q == best;
+                if (q > best) {
+                    best = q;
+                    bu = u;
+                    bv = v;
+                    equal = 0;
+                }
+            }
+        INFO("case " << k << ": " << w << " x " << h << ", template " << tw << " x " << th
+                     << ", centre (" << cx << ", " << cy << ") radius " << radius);
+        REQUIRE(hit.positions == positions);
+        REQUIRE(hit.found == (positions > 0));
+        if (positions == 0) continue;
+        ++cases;
+        ties += equal > 0;
+        CHECK(hit.score_q15 == best);
+        // The sub-pixel step moves the centre by at most half a pixel each way.
+        CHECK(std::abs(hit.x_q8 - (bu * 256 + (tw - 1) * 128)) <= 128);
+        CHECK(std::abs(hit.y_q8 - (bv * 256 + (th - 1) * 128)) <= 128);
+    }
+    CHECK(cases > 200);
+    CHECK(ties > 20);  // the periodic pattern gave ties for the rule to settle
+}
+
 TEST_CASE("search_template sub-pixel: a smooth texture shifted by 0.25 and 0.5 px", "[template]") {
     const double kError2d = 0.1;
     // The template is cut from the texture rendered unshifted at top-left (20, 18), 11 × 11,
