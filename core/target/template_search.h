@@ -40,8 +40,11 @@ struct TemplateHit {
 
 // Scores every template placement whose centre lies within ±radius px (per axis) of
 // (cx, cy) and whose pixels all lie in the region; keeps the best NCC (ties: the first in
-// row-major order, so every platform agrees). Work: (positions + 8) · w · h · 3 multiply-adds. A
-// template of more than kNccMaxPixels pixels finds nothing.
+// row-major order, so every platform agrees). Work: positions · w · h multiply-adds (Σab; Σb and
+// Σb² come from column sums slid down the window: 2 per column and row of candidates), a root
+// and a division for each candidate scoring above 0 or before the first that does, and 8 more
+// candidates scored in full for the sub-pixel step. A template of more than kNccMaxPixels
+// pixels finds nothing.
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
                             int32_t cx, int32_t cy, uint16_t radius);
 
