@@ -5,25 +5,31 @@
 
 namespace qt::cli {
 
-bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
-                  uint8_t bin) {
-    static HostBoardDetector det;                 // ~90 KB: static, as firmware keeps it
+const char* capacity_name(DetectorCapacity c) {
+    return c == DetectorCapacity::qvga ? "qvga" : "vga";
+}
+int max_frame_width(DetectorCapacity c) {
+    return c == DetectorCapacity::qvga ? Qvga::max_width : kMaxFrameWidth;
+}
+int max_frame_height(DetectorCapacity c) {
+    return c == DetectorCapacity::qvga ? Qvga::max_height : kMaxFrameHeight;
+}
+
+namespace {
+
+// The chain on one frame with detector `det`, its results copied into `result` (whose size and
+// bin factor are set).
+template <class Detector>
+bool run_chain(Detector& det, const io::GreyImage& frame, const BoardParams& params,
+               DetectResult& result) {
     static BinningStage<kMaxFrameWidth> binning;  // 1.9 KB
-    result = DetectResult{};
-    const int w = bin > 0 ? frame.width / bin : 0, h = bin > 0 ? frame.height / bin : 0;
-    result.width = static_cast<uint16_t>(w);
-    result.height = static_cast<uint16_t>(h);
-    result.bin = bin;
-    if (w <= 0 || h <= 0 || w > kMaxFrameWidth || h > kMaxFrameHeight || frame.width > 65535 ||
-        frame.height > 65535) {
-        result.status = Status::bad_size;
-        return false;
-    }
+    const uint8_t bin = result.bin;
+    const uint16_t w = result.width, h = result.height;
     Status s;
     if (bin == 1) {
         s = io::push_frame(det, frame, params);
     } else {
-        s = det.begin_frame(static_cast<uint16_t>(w), static_cast<uint16_t>(h), params);
+        s = det.begin_frame(w, h, params);
         if (s == Status::previous_frame_incomplete) s = Status::ok;
         if (s == Status::ok)
             s = io::push_binned_rows(binning, frame, bin, [&](const uint8_t* row, uint16_t n) {
@@ -41,7 +47,31 @@ bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectR
     return true;
 }
 
-uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error) {
+}  // namespace
+
+bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
+                  uint8_t bin, DetectorCapacity capacity) {
+    static HostBoardDetector vga;   // ~90 KB: static, as firmware keeps it
+    static BoardDetectorQvga qvga;  // ~50 KB
+    result = DetectResult{};
+    const int w = bin > 0 ? frame.width / bin : 0, h = bin > 0 ? frame.height / bin : 0;
+    result.width = static_cast<uint16_t>(w);
+    result.height = static_cast<uint16_t>(h);
+    result.bin = bin;
+    if (w <= 0 || h <= 0 || w > max_frame_width(capacity) || h > max_frame_height(capacity) ||
+        frame.width > 65535 || frame.height > 65535) {
+        result.status = Status::bad_size;
+        return false;
+    }
+    return capacity == DetectorCapacity::qvga ? run_chain(qvga, frame, params, result)
+                                              : run_chain(vga, frame, params, result);
+}
+
+uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error,
+                   DetectorCapacity capacity) {
+    const int max_w = max_frame_width(capacity), max_h = max_frame_height(capacity);
+    const std::string build =
+        capacity == DetectorCapacity::qvga ? "the QVGA capacity's " : "this build's ";
     const auto size = [](int w, int h) { return std::to_string(w) + " x " + std::to_string(h); };
     if (width <= 0 || height <= 0 || width > 65535 || height > 65535) {
         error = size(width, height) + " cannot be binned";
@@ -49,18 +79,18 @@ uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error)
     }
     const uint16_t w = static_cast<uint16_t>(width), h = static_cast<uint16_t>(height);
     if (requested == 0) {
-        const uint8_t n = bin_factor_to_fit(w, h, kMaxFrameWidth, kMaxFrameHeight);
+        const uint8_t n =
+            bin_factor_to_fit(w, h, static_cast<uint16_t>(max_w), static_cast<uint16_t>(max_h));
         if (n == 0)
-            error = size(width, height) + " does not fit this build's " +
-                    size(kMaxFrameWidth, kMaxFrameHeight) + " by any bin factor up to " +
-                    std::to_string(kMaxBinFactor);
+            error = size(width, height) + " does not fit " + build + size(max_w, max_h) +
+                    " by any bin factor up to " + std::to_string(kMaxBinFactor);
         return n;
     }
     const int bw = width / requested, bh = height / requested;
-    if (bw == 0 || bh == 0 || bw > kMaxFrameWidth || bh > kMaxFrameHeight) {
+    if (bw == 0 || bh == 0 || bw > max_w || bh > max_h) {
         error = size(width, height) + " binned by " + std::to_string(requested) + " is " +
-                size(bw, bh) + ", not within this build's " +
-                size(kMaxFrameWidth, kMaxFrameHeight) + " (--bin auto picks a factor)";
+                size(bw, bh) + ", not within " + build + size(max_w, max_h) +
+                " (--bin auto picks a factor)";
         return 0;
     }
     return requested;

@@ -1,6 +1,7 @@
 // One grey frame through core's detection chain on the host (CLI, demo, benches): rows are
 // pushed as a camera would, through the binning stage when the frame is larger than the
-// detector, and the results copied out. Uses one static VGA-capacity detector.
+// detector, and the results copied out. Uses one static detector of the chosen capacity: the
+// VGA build, or the QVGA build the firmware and the C API run (core/base/capacity.h).
 #pragma once
 #include <stdint.h>
 
@@ -13,9 +14,16 @@
 
 namespace qt::cli {
 
-// The CLI's detector: frames up to 640 × 480, larger ones binned to fit.
+// The CLI's detectors: the VGA build (frames up to 640 × 480, the default) and the QVGA build
+// (320 × 240: what firmware built with qt::Qvga finds in the same frame); larger frames are
+// binned to fit.
 using HostBoardDetector = BoardDetectorVga;
 constexpr int kMaxFrameWidth = 640, kMaxFrameHeight = 480;
+enum class DetectorCapacity : uint8_t { vga, qvga };
+const char* capacity_name(DetectorCapacity c);
+// The largest frame a capacity takes, px.
+int max_frame_width(DetectorCapacity c);
+int max_frame_height(DetectorCapacity c);
 
 struct DetectResult {
     Status status = Status::ok;      // of the chain (ok or capacity_exceeded when it ran)
@@ -27,17 +35,20 @@ struct DetectResult {
     QuadStats quad_stats;
 };
 
-// Runs the chain on `frame` binned by `bin` (1: as it is): the result is in the binned frame's
-// pixels (width, height its size; to_input_pixels() maps it back). Returns false (with
-// result.status saying why) on an error status, bad_size when the binned frame is empty or
-// larger than 640 × 480; capacity_exceeded still returns true with the results found.
+// Runs the chain on `frame` binned by `bin` (1: as it is) with the detector of `capacity`: the
+// result is in the binned frame's pixels (width, height its size; to_input_pixels() maps it
+// back). Returns false (with result.status saying why) on an error status, bad_size when the
+// binned frame is empty or larger than the capacity's frame; capacity_exceeded still returns
+// true with the results found.
 bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
-                  uint8_t bin = 1);
+                  uint8_t bin = 1, DetectorCapacity capacity = DetectorCapacity::vga);
 
 // The bin factor for a width × height frame: `requested` (1..kMaxBinFactor) when not 0,
-// otherwise the smallest that brings the frame within 640 × 480. Returns 0 with one line in
-// `error` when none does, or the requested one leaves the frame larger than that or empty.
-uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error);
+// otherwise the smallest that brings the frame within the capacity's frame (640 × 480 for
+// vga, 320 × 240 for qvga). Returns 0 with one line in `error` when none does, or the
+// requested one leaves the frame larger than that or empty.
+uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error,
+                   DetectorCapacity capacity = DetectorCapacity::vga);
 
 // A line in the binned frame's pixels -> the same line in the input's (x = N·u + (N − 1)/2):
 // end points and closest point mapped, theta kept unless rho's sign turns (rho >= 0 always).

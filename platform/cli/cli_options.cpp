@@ -317,8 +317,25 @@ const FlagTable<DetectOptions, Command>& table() {
             integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1,
                               HostBoardDetector::max_quads(),
                               [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
-            bin_flag<DetectOptions, Command>([](DetectOptions& o) -> uint8_t& { return o.bin; },
-                                             Command::detect),
+            bin_flag<DetectOptions, Command>(
+                [](DetectOptions& o) -> uint8_t& { return o.bin; }, Command::detect,
+                "frames larger than 640 x 480 (320 x 240 with --capacity qvga) are binned: each "
+                "pixel the mean of an N x N block, results in the input's pixels; auto: the "
+                "smallest N that fits, 1..16"),
+            {"capacity", "vga|qvga",
+             "the detector build: vga = qt::Vga, frames up to 640 x 480 (the CLI's own); qvga = "
+             "qt::Qvga, frames up to 320 x 240, the capacities of the firmware and the C API, "
+             "so the same frame gives their results (larger frames binned to fit either way)",
+             [](DetectOptions o) { return std::string(capacity_name(o.capacity)); },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 if (t != "vga" && t != "qvga") {
+                     e = "expected vga or qvga, got '" + t + "'";
+                     return false;
+                 }
+                 o.capacity = t == "qvga" ? DetectorCapacity::qvga : DetectorCapacity::vga;
+                 return true;
+             },
+             Command::detect},
             // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
             track_only(
                 {"model", "paper|turn",

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/board_runner.h"
 #include "quads/board_detector.h"
 #include "tracking/line_tracker.h"
 
@@ -32,8 +33,10 @@ struct DetectOptions {
     BoardParams params;
     uint16_t display_width = 1024, display_height = 768;  // display pixels (rule 5, homography)
     uint16_t max_quads = 4;                               // quadrangles reported, 1..4
-    uint8_t bin = 0;  // binning factor of frames over 640 × 480, 1..16; 0: the smallest that fits
-    TrackOptions track;  // track only
+    uint8_t bin = 0;  // binning factor of frames over the capacity's size, 1..16; 0: the smallest
+                      // that fits
+    DetectorCapacity capacity = DetectorCapacity::vga;  // the detector build the frames run on
+    TrackOptions track;                                 // track only
 
     DetectOptions();  // params.quads.display_aspect follows the display size
 };

@@ -14,7 +14,7 @@ std::string detect_usage() {
            "plane),\n"
            "  or - for standard input. A frame larger than " +
            std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
-           " pixels is binned to fit (--bin).\n"
+           " pixels (320 x 240 with --capacity qvga) is binned to fit (--bin).\n"
            "  Prints one JSON object on stdout (see docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
            options_help();
@@ -22,7 +22,7 @@ std::string detect_usage() {
 
 bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, uint8_t bin,
                   DetectResult& result, std::string& error) {
-    if (!detect_board(frame, options.params, result, bin)) {
+    if (!detect_board(frame, options.params, result, bin, options.capacity)) {
         error = status_name(result.status);
         return false;
     }
@@ -43,7 +43,7 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         return 1;
     }
     const std::string name = io::input_name(path);
-    const uint8_t bin = choose_bin(frame.width, frame.height, options.bin, error);
+    const uint8_t bin = choose_bin(frame.width, frame.height, options.bin, error, options.capacity);
     DetectResult result;
     if (bin == 0 || !detect_frame(frame, options, bin, result, error)) {
         qt::io::print_error_line(err, "quadtrack detect: %s: %s", name.c_str(), error.c_str());

@@ -116,12 +116,17 @@ Flag<Options, Command> integer_flag(const char* name, const char* value, const c
 
 // --bin N|auto: frames are reduced by N × N block means before the chain (core's binning stage,
 // gradient/binning.h); auto (stored as 0) picks the smallest N that fits the build.
+// `help` says which frames are binned.
 template <class Options, class Command>
-Flag<Options, Command> bin_flag(std::function<uint8_t&(Options&)> field, Command command) {
+Flag<Options, Command> bin_flag(
+    std::function<uint8_t&(Options&)> field, Command command,
+    const char* help =
+        "frames larger than 640 x 480 are binned: each pixel the mean of an N x N "
+        "block, results in the input's pixels; auto: the smallest N that fits, "
+        "1..16") {
     return {"bin",
             "N|auto",
-            "frames larger than 640 x 480 are binned: each pixel the mean of an N x N block, "
-            "results in the input's pixels; auto: the smallest N that fits, 1..16",
+            help,
             [field](Options o) {
                 return field(o) == 0 ? std::string("auto") : std::to_string(field(o));
             },

@@ -17,7 +17,7 @@ std::string track_usage() {
            "  another: each frame's line is written as soon as the frame has been read). Every\n"
            "  frame the same size; frames larger than " +
            std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
-           " pixels are binned to fit (--bin).\n"
+           " pixels (320 x 240 with --capacity qvga) are binned to fit (--bin).\n"
            "  Each frame is detected as by quadtrack detect, then the quadrangle tracker carries "
            "the\n"
            "  board: one JSON line per frame on stdout (see docs/cli.md).\n"
@@ -57,7 +57,7 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         if (k == 0) {
             // Every frame has frame 0's size: one bin factor, and the tracker works in the
             // binned frame's pixels.
-            bin = choose_bin(frame.width, frame.height, options.bin, error);
+            bin = choose_bin(frame.width, frame.height, options.bin, error, options.capacity);
             if (bin == 0) {
                 qt::io::print_error_line(err, "quadtrack track: %s: %s", name.c_str(),
                                          error.c_str());

@@ -8,8 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "base/prng.h"
 #include "cli/detect_command.h"
 #include "io/image_io.h"
+#include "io/push_frame.h"
+#include "quads/board_detector.h"
 #include "scene/board_scene.h"
 #include "scene/board_sequence.h"
 #include "support/cli_run.h"
@@ -101,6 +104,87 @@ TEST_CASE("detect bins a frame larger than the build and reports in the input's 
         const auto& c = d.scene.corners[truth_of[i]];
         CHECK(std::hypot(q["corners"][i][0].num - c.x / 256.0,
                          q["corners"][i][1].num - c.y / 256.0) < 3.0);
+    }
+}
+
+TEST_CASE("detect --capacity qvga gives what the QVGA build finds in the same frame",
+          "[cli][capacity]") {
+    // The reference: the frame pushed straight into a qt::BoardDetectorQvga with default
+    // parameters, as the firmware and the C API run it (not through the CLI's runner).
+    static qt::BoardDetectorQvga det;
+    auto corners_of = [](const Json& q, int i) {
+        return std::make_pair(q["corners"][static_cast<size_t>(i)][0].num,
+                              q["corners"][static_cast<size_t>(i)][1].num);
+    };
+    SECTION("a 320 x 240 frame: the same lines and corners as the QVGA detector") {
+        // The board of the demo's sequence at half size with 300 straight strokes over it:
+        // enough lines to fill the QVGA build's capacities and not the VGA build's.
+        qt::scene::BoardSequenceFrame d = qt::scene::board_sequence_frame(3, 2);
+        REQUIRE(d.image.width == 320);
+        qt::Pcg32 rng(7);
+        for (int k = 0; k < 300; ++k) {
+            const double x0 = rng.below(320), y0 = rng.below(240), a = rng.below(180) * 0.01745;
+            const uint8_t v = rng.below(2) ? 20 : 240;
+            const int length = 20 + static_cast<int>(rng.below(80));
+            for (int t = 0; t < length; ++t) {
+                const int x = static_cast<int>(x0 + t * std::cos(a)),
+                          y = static_cast<int>(y0 + t * std::sin(a));
+                if (x >= 0 && x < 320 && y >= 0 && y < 240)
+                    d.image.pixels[static_cast<size_t>(y * 320 + x)] = v;
+            }
+        }
+        const std::string path = (temp_dir() / "busy_qvga.pgm").string();
+        std::string error;
+        REQUIRE(qt::io::write_pgm(path, d.image, error));
+        qt::BoardParams params;  // detect's display, 1024 x 768, is the default 4:3
+        const qt::Status s = qt::io::push_frame(det, d.image, params);
+        REQUIRE((s == qt::Status::ok || s == qt::Status::capacity_exceeded));
+        const Run r = detect({path, "--capacity", "qvga"});
+        INFO("stderr: " << r.err);
+        REQUIRE(r.status == 0);
+        const Json j = JsonReader::parse(r.out);
+        CHECK(j["bin"].num == 1);
+        CHECK(j["status"].str == (s == qt::Status::ok ? "ok" : "capacity_exceeded"));
+        REQUIRE(j["lines"].items.size() == det.lines().line_count());
+        for (size_t i = 0; i < j["lines"].items.size(); ++i) {
+            CHECK(std::fabs(j["lines"][i]["x1"].num - det.lines().lines()[i].x1.raw / 65536.0) <
+                  1e-4);
+            CHECK(std::fabs(j["lines"][i]["rho"].num - det.lines().lines()[i].rho.raw / 65536.0) <
+                  1e-4);
+        }
+        REQUIRE(j["quads"].items.size() == det.quad_count());
+        for (size_t k = 0; k < det.quad_count(); ++k)
+            for (int i = 0; i < 4; ++i) {
+                const auto c = corners_of(j["quads"][k], i);
+                CHECK(std::fabs(c.first - det.quads()[k].corners[i].x.raw / 65536.0) < 1e-4);
+                CHECK(std::fabs(c.second - det.quads()[k].corners[i].y.raw / 65536.0) < 1e-4);
+            }
+        // The VGA build (the default) keeps more of the strokes' lines in the same frame.
+        const Run v = detect({path});
+        REQUIRE(v.status == 0);
+        CHECK(JsonReader::parse(v.out)["lines"].items.size() > j["lines"].items.size());
+    }
+    SECTION("a 640 x 480 frame is binned by 2 to fit, and reported in the input's pixels") {
+        const Run r = detect({board_pgm(), "--capacity", "qvga"});
+        INFO("stderr: " << r.err);
+        REQUIRE(r.status == 0);
+        const Json j = JsonReader::parse(r.out);
+        CHECK(j["width"].num == 640);
+        CHECK(j["height"].num == 480);
+        CHECK(j["bin"].num == 2);
+        REQUIRE(j["quads"].items.size() >= 1);
+        // The scene's corners (see the next test) within a binned pixel.
+        const double truth[4][2] = {{188, 112}, {160, 318}, {430, 352}, {452, 150}};
+        for (int i = 0; i < 4; ++i) {
+            const auto c = corners_of(j["quads"][0], i);
+            CHECK(std::hypot(c.first - truth[i][0], c.second - truth[i][1]) < 2.0);
+        }
+    }
+    SECTION("bad values and frames the QVGA build cannot take") {
+        require_error({board_pgm(), "--capacity", "xga"}, 2, "expected vga or qvga, got 'xga'");
+        require_error({board_pgm(), "--capacity", "qvga", "--bin", "1"}, 1,
+                      "640 x 480 binned by 1 is 640 x 480, not within the QVGA capacity's 320 x "
+                      "240");
     }
 }
 
