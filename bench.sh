@@ -14,7 +14,7 @@
 #                  Cortex-M4F (hard float, QEMU -icount): instructions per QVGA frame and stage,
 #                  median and worst, flash, RAM, stack
 #   budget-table   one table of the above for Cortex-M4, M4F and M3: per stage and kind of frame
-#                  (board, clutter, real photograph), median and worst; flash and RAM per image
+#                  (board, clutter, real photograph, stress), median and worst; flash and RAM per image
 #   track-m4       instructions per line per frame of the line tracker (1KF, 2KF, 3KF, turn) on
 #                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,

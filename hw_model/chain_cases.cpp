@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "api/result_text.h"
+#include "base/prng.h"
 #include "quads/board_detector.h"
 #include "scene/board_sequence.h"
 #include "scene/line_scene.h"
@@ -26,6 +27,31 @@ std::vector<ChainCase> chain_cases() {
         o.clutter_texture = 20;
         o.seed = 31;
         cases.push_back({"clutter_qvga", {scene::random_polygon_scene(o, 3, 30, 60).render()}});
+    }
+    {  // The worst frames known for the chain's budget: every pixel an independent grey level
+        // (a camera at high gain in the dark, gravel, foliage), then 150 straight strokes of
+        // random grey crossing the frame (edges and lines everywhere).
+        ChainCase c{"stress_qvga", {}};
+        Pcg32 rng(2026);
+        io::GreyImage noise;
+        noise.width = 320;
+        noise.height = 240;
+        noise.pixels.resize(320 * 240);
+        for (uint8_t& p : noise.pixels) p = static_cast<uint8_t>(rng.below(256));
+        c.frames.push_back(noise);
+        scene::SceneOptions o;
+        o.background = 120;
+        scene::LineScene strokes(o);
+        for (int k = 0; k < 150; ++k) {
+            const scene::Point2 a{static_cast<double>(rng.below(320)),
+                                  static_cast<double>(rng.below(240))};
+            scene::Point2 b{static_cast<double>(rng.below(320)),
+                            static_cast<double>(rng.below(240))};
+            if (a.x == b.x && a.y == b.y) b.x = a.x + 1;
+            strokes.add_line(a, b, 1.0 + rng.below(3), static_cast<uint8_t>(rng.below(256)));
+        }
+        c.frames.push_back(strokes.render());
+        cases.push_back(c);
     }
     return cases;
 }

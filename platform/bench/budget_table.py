@@ -19,7 +19,7 @@ import argparse, glob, os, re, subprocess, sys
 
 # The chain cases of chain_bench and the kind of frame each is.
 KINDS = [("board_motion_qvga", "board"), ("clutter_qvga", "clutter"),
-         ("photos_qvga", "real photograph")]
+         ("photos_qvga", "real photograph"), ("stress_qvga", "stress (noise, strokes)")]
 FRAME_RE = {head: re.compile(r"^%s (\S+)((?: \w+=\d+)+)$" % head) for head in ("budget", "fpga")}
 
 
