@@ -55,7 +55,7 @@ class GradientStage {
     using value_type = typename RowKernel::value_type;
 
 public:
-    RowKernel kernel;  // its parameters, if any, may change between frames
+    RowKernel kernel;  // its parameters, if any, may change between rows
 
     static constexpr uint16_t kMaxWidth = MaxWidth;
 

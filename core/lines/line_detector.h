@@ -108,6 +108,12 @@ public:
         // after a frame of gradient words is a row after the last one too.
         if (!open_ || !edge_stage_.in_frame() || beats_) return Status::not_in_frame;
         rows_seen_ = true;
+        // Directions only where the list can still take the edge: NMS reads a pixel's direction
+        // only at or above its threshold, which is at least the list's floor now (the floor only
+        // rises), so the rows give the same list with less work once a busy frame fills it.
+        const uint16_t floor = edges_view_.floor();
+        gradient_.kernel.edge_threshold =
+            floor > params_.edge_threshold ? floor : params_.edge_threshold;
         Status edge_status = Status::ok;
         auto edges = [&](uint16_t, const uint16_t* packed, uint16_t n) {
             const Status e = edge_stage_.push_packed_row(packed, n);
