@@ -111,9 +111,9 @@ public:
         // Directions only where the list can still take the edge: NMS reads a pixel's direction
         // only at or above its threshold, which is at least the list's floor now (the floor only
         // rises), so the rows give the same list with less work once a busy frame fills it.
-        const uint16_t floor = edges_view_.floor();
+        const uint16_t list_floor = edges_view_.floor();
         gradient_.kernel.edge_threshold =
-            floor > params_.edge_threshold ? floor : params_.edge_threshold;
+            list_floor > params_.edge_threshold ? list_floor : params_.edge_threshold;
         Status edge_status = Status::ok;
         auto edges = [&](uint16_t, const uint16_t* packed, uint16_t n) {
             const Status e = edge_stage_.push_packed_row(packed, n);
