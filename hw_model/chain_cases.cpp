@@ -48,7 +48,10 @@ std::vector<ChainCase> chain_cases() {
             scene::Point2 b{static_cast<double>(rng.below(320)),
                             static_cast<double>(rng.below(240))};
             if (a.x == b.x && a.y == b.y) b.x = a.x + 1;
-            strokes.add_line(a, b, 1.0 + rng.below(3), static_cast<uint8_t>(rng.below(256)));
+            // One draw per statement: the order of a call's arguments is unspecified.
+            const double width = 1.0 + rng.below(3);
+            const uint8_t level = static_cast<uint8_t>(rng.below(256));
+            strokes.add_line(a, b, width, level);
         }
         c.frames.push_back(strokes.render());
         cases.push_back(c);
