@@ -319,9 +319,7 @@ const FlagTable<DetectOptions, Command>& table() {
                               [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
             bin_flag<DetectOptions, Command>(
                 [](DetectOptions& o) -> uint8_t& { return o.bin; }, Command::detect,
-                "frames larger than 640 x 480 (320 x 240 with --capacity qvga) are binned: each "
-                "pixel the mean of an N x N block, results in the input's pixels; auto: the "
-                "smallest N that fits, 1..16"),
+                "frames larger than 640 x 480 (320 x 240 with --capacity qvga)"),
             {"capacity", "vga|qvga",
              "the detector build: vga = qt::Vga, frames up to 640 x 480 (the CLI's own); qvga = "
              "qt::Qvga, frames up to 320 x 240, the capacities of the firmware and the C API, "

@@ -16,7 +16,7 @@ template <class Options, class Command>
 struct Flag {
     const char* name;
     const char* value;                         // placeholder in the help
-    const char* help;                          // with unit and range
+    std::string help;                          // with unit and range
     std::function<std::string(Options)> show;  // the value in a copy of the options
     std::function<bool(const std::string&, Options&, std::string&)> set;  // parse, check, store
     Command command{};  // the one command it serves, or the table's `every`
@@ -116,17 +116,15 @@ Flag<Options, Command> integer_flag(const char* name, const char* value, const c
 
 // --bin N|auto: frames are reduced by N × N block means before the chain (core's binning stage,
 // gradient/binning.h); auto (stored as 0) picks the smallest N that fits the build.
-// `help` says which frames are binned.
+// `frames`: which frames are binned.
 template <class Options, class Command>
-Flag<Options, Command> bin_flag(
-    std::function<uint8_t&(Options&)> field, Command command,
-    const char* help =
-        "frames larger than 640 x 480 are binned: each pixel the mean of an N x N "
-        "block, results in the input's pixels; auto: the smallest N that fits, "
-        "1..16") {
+Flag<Options, Command> bin_flag(std::function<uint8_t&(Options&)> field, Command command,
+                                const std::string& frames = "frames larger than 640 x 480") {
     return {"bin",
             "N|auto",
-            help,
+            frames +
+                " are binned: each pixel the mean of an N x N block, results in the input's "
+                "pixels; auto: the smallest N that fits, 1..16",
             [field](Options o) {
                 return field(o) == 0 ? std::string("auto") : std::to_string(field(o));
             },
