@@ -87,58 +87,64 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     // NccSums are those score() adds up pixel by pixel: the same scores, the same best.
     // A template wider than half a strip (a few rows of many columns) is scored as it is.
     constexpr int32_t kStrip = 64;
-    uint32_t col_sum[kStrip], col_sq[kStrip];
-    if (tw > kStrip / 2)
+    if (tw > kStrip / 2) {
         for (int32_t v = v0; v <= v1; ++v)
             for (int32_t u = u0; u <= u1; ++u) consider(score(u, v), u, v);
-    for (int32_t s0 = u0; tw <= kStrip / 2 && s0 <= u1; s0 += kStrip - tw + 1) {
-        const int32_t s1 = u1 < s0 + kStrip - tw ? u1 : s0 + kStrip - tw;  // last placement
-        const int32_t cols = s1 - s0 + tw;
-        const uint8_t* left = region.pixels + static_cast<uint32_t>(s0 - region.x0);
-        for (int32_t c = 0; c < cols; ++c) col_sum[c] = col_sq[c] = 0;
-        for (int32_t v = v0; v <= v1; ++v) {
-            // The columns hold rows [v, v + th): add the entering rows, remove the leaving one.
-            for (int32_t r = v == v0 ? v : v + th - 1; r < v + th; ++r) {
-                const uint8_t* row = left + static_cast<uint32_t>(r - region.y0) * region.stride;
+    } else {
+        uint32_t col_sum[kStrip], col_sq[kStrip];
+        for (int32_t s0 = u0; s0 <= u1; s0 += kStrip - tw + 1) {
+            const int32_t s1 = u1 < s0 + kStrip - tw ? u1 : s0 + kStrip - tw;  // last placement
+            const int32_t cols = s1 - s0 + tw;
+            const uint8_t* left = region.pixels + static_cast<uint32_t>(s0 - region.x0);
+            auto row_at = [&](int32_t r) {
+                return left + static_cast<uint32_t>(r - region.y0) * region.stride;
+            };
+            auto add_row = [&](int32_t r) {
+                const uint8_t* in = row_at(r);
                 for (int32_t c = 0; c < cols; ++c) {
-                    col_sum[c] += row[c];
-                    col_sq[c] += uint32_t{row[c]} * row[c];
+                    col_sum[c] += in[c];
+                    col_sq[c] += uint32_t{in[c]} * in[c];
                 }
-            }
-            if (v > v0) {
-                const uint8_t* row =
-                    left + static_cast<uint32_t>(v - 1 - region.y0) * region.stride;
-                for (int32_t c = 0; c < cols; ++c) {
-                    col_sum[c] -= row[c];
-                    col_sq[c] -= uint32_t{row[c]} * row[c];
+            };
+            // The columns hold rows [v0, v0 + th − 1) before the first row of placements; each
+            // row v of placements adds row v + th − 1 and (after the first) removes row v − 1.
+            for (int32_t c = 0; c < cols; ++c) col_sum[c] = col_sq[c] = 0;
+            for (int32_t r = v0; r < v0 + th - 1; ++r) add_row(r);
+            for (int32_t v = v0; v <= v1; ++v) {
+                add_row(v + th - 1);
+                if (v > v0) {
+                    const uint8_t* out = row_at(v - 1);
+                    for (int32_t c = 0; c < cols; ++c) {
+                        col_sum[c] -= out[c];
+                        col_sq[c] -= uint32_t{out[c]} * out[c];
+                    }
                 }
-            }
-            uint32_t box_sum = 0, box_sq = 0;
-            for (int32_t c = 0; c < tw - 1; ++c) {
-                box_sum += col_sum[c];
-                box_sq += col_sq[c];
-            }
-            const uint8_t* at0 = left + static_cast<uint32_t>(v - region.y0) * region.stride;
-            for (int32_t u = s0; u <= s1; ++u) {
-                const int32_t c = u - s0;
-                box_sum += col_sum[c + tw - 1];
-                box_sq += col_sq[c + tw - 1];
-                NccSums s = t;
-                s.sb = box_sum;
-                s.sbb = box_sq;
-                for (uint8_t y = 0; y < th; ++y)
-                    s.sab +=
-                        dot_bytes(tpl + uint32_t{y} * tw,
-                                  at0 + static_cast<uint32_t>(c) + uint32_t{y} * region.stride, tw);
-                box_sum -= col_sum[c];
-                box_sq -= col_sq[c];
-                // n·Σab <= Σa·Σb: a score of 0 or below (flat blocks score 0 too), which cannot
-                // beat a positive best; the root and the division are spared.
-                if (best > 0 && int64_t{s.n} * s.sab <= int64_t{s.sa} * s.sb) {
-                    consider(0, u, v);
-                    continue;
+                uint32_t box_sum = 0, box_sq = 0;
+                for (int32_t c = 0; c < tw - 1; ++c) {
+                    box_sum += col_sum[c];
+                    box_sq += col_sq[c];
                 }
-                consider(ncc_from_sums(s).q15, u, v);
+                const uint8_t* at0 = row_at(v);
+                for (int32_t u = s0; u <= s1; ++u) {
+                    const int32_t c = u - s0;
+                    box_sum += col_sum[c + tw - 1];
+                    box_sq += col_sq[c + tw - 1];
+                    NccSums s = t;
+                    s.sb = box_sum;
+                    s.sbb = box_sq;
+                    for (uint8_t y = 0; y < th; ++y)
+                        s.sab += dot_bytes(
+                            tpl + uint32_t{y} * tw,
+                            at0 + static_cast<uint32_t>(c) + uint32_t{y} * region.stride, tw);
+                    box_sum -= col_sum[c];
+                    box_sq -= col_sq[c];
+                    // n·Σab <= Σa·Σb: a score of 0 or below (flat blocks score 0 too), which
+                    // cannot beat a positive best; the root and the division are spared.
+                    if (best > 0 && int64_t{s.n} * s.sab <= int64_t{s.sa} * s.sb)
+                        ++hit.positions;
+                    else
+                        consider(ncc_from_sums(s).q15, u, v);
+                }
             }
         }
     }
