@@ -71,6 +71,7 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
             ncc_add_row<false>(tpl + uint32_t{y} * tw, at + uint32_t{y} * region.stride, tw, s);
         return static_cast<int32_t>(ncc_from_sums(s).q15);
     };
+    if (u0 > u1 || v0 > v1) return hit;  // no candidate lies in the region
     int32_t best = INT32_MIN, bu = 0, bv = 0;
     // Ties go to the first candidate in row-major order, whatever order they are scored in.
     auto consider = [&](int32_t s, int32_t u, int32_t v) {
@@ -148,7 +149,6 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
             }
         }
     }
-    if (hit.positions == 0) return hit;
     hit.found = true;
     hit.score_q15 = static_cast<int16_t>(best);
     // Sub-pixel: one Newton step on the 3 × 3 scores about the best when they are all
