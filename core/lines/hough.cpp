@@ -168,10 +168,15 @@ public:
     void run(Segment* out, uint16_t capacity, uint16_t* count) {
         *count = 0;
         VisitOrder order(edges_.size(), p_.seed);
+        const uint32_t voters = p_.max_voters ? p_.max_voters : edges_.capacity() / 2u;
         for (uint32_t k = 0; k < edges_.size() && !stats_.budget_exhausted; ++k) {
             const uint16_t i = static_cast<uint16_t>(order.next());
             const edge_point pt = edges_[i];
             if (ep::state(pt) != ep::kFresh) continue;
+            if (stats_.points_visited == voters) {
+                stats_.voters_exhausted = true;
+                break;
+            }
             edges_[i] = ep::with_state(pt, ep::kVoted);
             ++stats_.points_visited;
             uint32_t best_bin = 0;

@@ -10,6 +10,9 @@
 // the θ within ±vote_window_deg of its gradient direction (the line's normal is the gradient
 // direction), which cuts the votes per point from theta_bins to about
 // theta_bins·2·window/180 and keeps clutter of other orientations out of each bin.
+//
+// Work per frame is bounded by two budgets (HoughParams): the points that vote (max_voters)
+// and the steps of line following (max_walk_steps); the votes withdrawn are at most those cast.
 #pragma once
 #include <stdint.h>
 
@@ -29,7 +32,13 @@ struct HoughParams {
     uint16_t vote_window_deg = 24;  // ± degrees around the gradient direction; 90 or more: all θ
     uint16_t corridor = 1;          // pixels either side of the line searched while following it
     uint32_t max_walk_steps = 200000;  // bound on line-following work per frame (steps)
-    uint64_t seed = 1;                 // visiting order
+    // Bound on voting per frame: edge points that vote, at most; 0: half the edge list's
+    // capacity (2048 with qt::Qvga, 8192 with qt::Vga). Points past it in the visiting order do
+    // not vote or seed a line, but walks still follow and consume them, and the quadrangle
+    // evidence still reads them: a long line has voted past the threshold well before its
+    // share of the list has (the photo bench's detection is unchanged at half the capacity).
+    uint16_t max_voters = 0;
+    uint64_t seed = 1;  // visiting order
 };
 
 struct HoughStats {
@@ -42,6 +51,7 @@ struct HoughStats {
     uint16_t segments_dropped = 0;  // segments found with the output full: the shortest of
                                     // those found and the new one is dropped
     bool budget_exhausted = false;  // stopped at max_walk_steps: not every point was visited
+    bool voters_exhausted = false;  // stopped at max_voters: fresh points were left unvisited
 };
 
 // Working memory of PPHT, as a view (see HoughStorage for the owning type).

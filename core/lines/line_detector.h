@@ -163,8 +163,8 @@ public:
 
     // After the last row: PPHT and clustering. not_in_frame if rows are missing, the frame was
     // abandoned or already finished; capacity_exceeded when edges, segments or clusters were
-    // dropped or PPHT ran out of its walk budget (the lines found are valid; stats() says what was
-    // cut).
+    // dropped or PPHT ran out of a work budget (walk steps, voters) (the lines found are valid;
+    // stats() says what was cut).
     Status finish() {
         return finish([](FinishStage) {});
     }
@@ -193,7 +193,8 @@ public:
         stats_.cluster.ends_joined = join_corners(lines_, line_count_, params_.corners, corners_);
         mark(FinishStage::cluster);
         const bool cut_short = stats_.edges_dropped > 0 || stats_.hough.segments_dropped > 0 ||
-                               stats_.hough.budget_exhausted || stats_.cluster.clusters_dropped > 0;
+                               stats_.hough.budget_exhausted || stats_.hough.voters_exhausted ||
+                               stats_.cluster.clusters_dropped > 0;
         return cut_short ? Status::capacity_exceeded : Status::ok;
     }
 

@@ -147,6 +147,12 @@ const FlagTable<DetectOptions, Command>& table() {
                 "max-walk-steps", "N", "PPHT line-following budget per frame, steps, 1..100000000",
                 1, 100000000,
                 [](DetectOptions& o) -> uint32_t& { return o.params.lines.hough.max_walk_steps; }),
+            integer<uint16_t>(
+                "max-voters", "N",
+                "PPHT voting budget per frame: edge points that vote, 0..65535 (0: half the edge "
+                "capacity, 2048 at QVGA, 8192 at VGA)",
+                0, 65535,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_voters; }),
             integer<uint64_t>(
                 "seed", "N", "PPHT visiting order seed, 0..2147483647", 0, 2147483647,
                 [](DetectOptions& o) -> uint64_t& { return o.params.lines.hough.seed; }),

@@ -64,7 +64,7 @@ void check_detect(const qt::cli::DetectOptions& o) {
     QT_FUZZ_CHECK(l.hough.vote_window_deg >= 1 && l.hough.vote_window_deg <= 90);
     QT_FUZZ_CHECK(l.hough.corridor <= 4);
     QT_FUZZ_CHECK(l.hough.max_walk_steps >= 1 && l.hough.max_walk_steps <= 100000000u);
-    QT_FUZZ_CHECK(l.hough.seed <= 2147483647u);
+    QT_FUZZ_CHECK(l.hough.seed <= 2147483647u);  // max_voters: every uint16_t is valid
     QT_FUZZ_CHECK(q16_in(l.cluster.distance, 0, 1000));
     QT_FUZZ_CHECK(deg_at_most(l.cluster.max_angle, 90));
     QT_FUZZ_CHECK(q16_in(l.cluster.gap, 0, 2048));

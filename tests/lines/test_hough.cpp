@@ -205,6 +205,72 @@ TEST_CASE("limits are reported: segment capacity, walk budget, bad parameters", 
     REQUIRE(g_det.finish() == Status::not_in_frame);
 }
 
+TEST_CASE("the voting budget bounds the points that vote and keeps a clear board's sides",
+          "[hough]") {
+    // A bright 200 x 140 box on grainy noise: the noise gives thousands of edge points, more
+    // than half the list, so the default budget (half the capacity, 2048) binds.
+    io::GreyImage img(320, 240);
+    Pcg32 rng(11);
+    const int x0 = 60, y0 = 50, x1 = 260, y1 = 190;  // the box: columns x0..x1 - 1, rows y0..y1 - 1
+    for (int y = 0; y < 240; ++y)
+        for (int x = 0; x < 320; ++x) {
+            const bool inside = x >= x0 && x < x1 && y >= y0 && y < y1;
+            img.at(x, y) = static_cast<uint8_t>((inside ? 190 : 40) + rng.next() % 48u);
+        }
+    // The sides on the pixel boundaries (an edge between x0 - 1 and x0 lies at x0 - 0.5).
+    const double sides[4][4] = {{x0 - 0.5, y0 - 0.5, x1 - 0.5, y0 - 0.5},
+                                {x1 - 0.5, y0 - 0.5, x1 - 0.5, y1 - 0.5},
+                                {x0 - 0.5, y1 - 0.5, x1 - 0.5, y1 - 0.5},
+                                {x0 - 0.5, y0 - 0.5, x0 - 0.5, y1 - 0.5}};
+    auto side_found = [](const double(&side)[4]) {
+        const double dx = side[2] - side[0], dy = side[3] - side[1];
+        const double len = std::hypot(dx, dy);
+        for (uint16_t i = 0; i < g_det.line_count(); ++i) {
+            const Segment& l = g_det.lines()[i];
+            const double ends[2][2] = {{l.x1.raw / 65536.0, l.y1.raw / 65536.0},
+                                       {l.x2.raw / 65536.0, l.y2.raw / 65536.0}};
+            bool near = true;
+            for (const auto& e : ends)
+                near = near && std::fabs((e[0] - side[0]) * dy - (e[1] - side[1]) * dx) / len < 2.0;
+            const double l_len = std::hypot(ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]);
+            if (near && l_len >= 0.6 * len) return true;
+        }
+        return false;
+    };
+    LineParams p;
+    REQUIRE(detect(img, p) == Status::capacity_exceeded);
+    const HoughStats by_default = g_det.stats().hough;
+    REQUIRE(by_default.voters_exhausted);
+    REQUIRE(by_default.points_visited == 2048);
+    REQUIRE_FALSE(by_default.budget_exhausted);
+    for (const auto& side : sides) REQUIRE(side_found(side));
+    std::vector<Segment> default_lines(g_det.lines(), g_det.lines() + g_det.line_count());
+
+    // 0 means half the capacity: the explicit value gives the same lines.
+    p.hough.max_voters = 2048;
+    REQUIRE(detect(img, p) == Status::capacity_exceeded);
+    REQUIRE(g_det.line_count() == default_lines.size());
+    for (uint16_t i = 0; i < g_det.line_count(); ++i) {
+        REQUIRE(g_det.lines()[i].x1 == default_lines[i].x1);
+        REQUIRE(g_det.lines()[i].y2 == default_lines[i].y2);
+    }
+
+    // A quarter of the capacity: exactly that many vote, and the box's long sides still pass
+    // the vote threshold before it binds (at 400 one of them does not).
+    p.hough.max_voters = 1024;
+    REQUIRE(detect(img, p) == Status::capacity_exceeded);
+    REQUIRE(g_det.stats().hough.voters_exhausted);
+    REQUIRE(g_det.stats().hough.points_visited == 1024);
+    REQUIRE(g_det.stats().hough.votes < by_default.votes / 2 + by_default.votes / 8);
+    for (const auto& side : sides) REQUIRE(side_found(side));
+
+    // No budget to speak of (more than the list holds): every fresh point votes.
+    p.hough.max_voters = 65535;
+    detect(img, p);
+    REQUIRE_FALSE(g_det.stats().hough.voters_exhausted);
+    REQUIRE(g_det.stats().hough.points_visited > 2048);
+}
+
 TEST_CASE("the QVGA lines stage fits 48 KiB of RAM", "[hough]") {
     STATIC_REQUIRE(LineDetectorQvga::ram_bytes() <= 48 * 1024);
     REQUIRE(LineDetectorQvga::ram_bytes() == sizeof(LineDetectorQvga));
