@@ -33,10 +33,7 @@ std::vector<ChainCase> chain_cases() {
         // random grey crossing the frame (edges and lines everywhere).
         ChainCase c{"stress_qvga", {}};
         Pcg32 rng(2026);
-        io::GreyImage noise;
-        noise.width = 320;
-        noise.height = 240;
-        noise.pixels.resize(320 * 240);
+        io::GreyImage noise(320, 240);
         for (uint8_t& p : noise.pixels) p = static_cast<uint8_t>(rng.below(256));
         c.frames.push_back(noise);
         scene::SceneOptions o;

@@ -31,6 +31,18 @@ Status detect(const io::GreyImage& img, const LineParams& p) {
     return g_det.finish();
 }
 
+// The detector's segments (or lines) equal `want`, end for end and angle for angle.
+void require_same(const Segment* got, uint16_t count, const std::vector<Segment>& want) {
+    REQUIRE(count == want.size());
+    for (uint16_t i = 0; i < count; ++i) {
+        REQUIRE(got[i].x1 == want[i].x1);
+        REQUIRE(got[i].y1 == want[i].y1);
+        REQUIRE(got[i].x2 == want[i].x2);
+        REQUIRE(got[i].y2 == want[i].y2);
+        REQUIRE(got[i].theta == want[i].theta);
+    }
+}
+
 io::GreyImage polygon_frame(uint64_t seed) {
     scene::SceneOptions o;
     o.noise_sigma = 5;
@@ -117,11 +129,7 @@ TEST_CASE("PPHT is deterministic for a seed and depends on it", "[hough]") {
     REQUIRE(detect(img, p) == Status::ok);
     std::vector<Segment> first(g_det.segments(), g_det.segments() + g_det.segment_count());
     REQUIRE(detect(img, p) == Status::ok);
-    REQUIRE(g_det.segment_count() == first.size());
-    for (size_t i = 0; i < first.size(); ++i) {
-        REQUIRE(g_det.segments()[i].x1 == first[i].x1);
-        REQUIRE(g_det.segments()[i].theta == first[i].theta);
-    }
+    require_same(g_det.segments(), g_det.segment_count(), first);
     p.hough.seed = 99;
     REQUIRE(detect(img, p) == Status::ok);
     bool differs = g_det.segment_count() != first.size();
@@ -249,11 +257,7 @@ TEST_CASE("the voting budget bounds the points that vote and keeps a clear board
     // 0 means half the capacity: the explicit value gives the same lines.
     p.hough.max_voters = 2048;
     REQUIRE(detect(img, p) == Status::capacity_exceeded);
-    REQUIRE(g_det.line_count() == default_lines.size());
-    for (uint16_t i = 0; i < g_det.line_count(); ++i) {
-        REQUIRE(g_det.lines()[i].x1 == default_lines[i].x1);
-        REQUIRE(g_det.lines()[i].y2 == default_lines[i].y2);
-    }
+    require_same(g_det.lines(), g_det.line_count(), default_lines);
 
     // A quarter of the capacity: exactly that many vote, and the box's long sides still pass
     // the vote threshold before it binds (at 400 one of them does not).
