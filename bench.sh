@@ -15,6 +15,7 @@
 #                  median and worst, flash, RAM, stack
 #   budget-table   one table of the above for Cortex-M4, M4F and M3: per stage and kind of frame
 #                  (board, clutter, real photograph, stress), median and worst; flash and RAM per image
+#   memory         flash and RAM of the chain and target firmware images (README's table)
 #   track-m4       instructions per line per frame of the line tracker (1KF, 2KF, 3KF, turn) on
 #                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
@@ -60,7 +61,7 @@ cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table track-m4 hdl-latency hdl-soak fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table memory track-m4 hdl-latency hdl-soak fpga fuzz)
 
 # The host benches compare with OpenCV in the same run: its development packages are installed
 # here (never by the test command; the runtime never links it), and the configure step fails
@@ -97,6 +98,21 @@ budget_table() {
     python3 platform/bench/budget_table.py \
         --chain Cortex-M4="$out/m4.txt" --chain Cortex-M4F="$out/m4f.txt" \
         --chain Cortex-M3="$out/m3.txt" --target Cortex-M4F="$out/m4f-target.txt" \
+        --elves Cortex-M4=build/cortex-m4/platform/firmware \
+        --elves Cortex-M4F=build/cortex-m4f/platform/firmware \
+        --elves Cortex-M3=build/cortex-m3/platform/firmware
+}
+
+# memory: flash and RAM of the product images, from their link (the README's table).
+memory_table() {
+    local preset
+    ensure_packages cmake make g++ gcc-arm-none-eabi libnewlib-arm-none-eabi \
+        libstdc++-arm-none-eabi-newlib opencv-doc netpbm
+    for preset in cortex-m4 cortex-m4f cortex-m3; do
+        cmake --preset "$preset" >/dev/null
+        cmake --build --preset "$preset" -j"$jobs" >/dev/null
+    done
+    python3 platform/bench/budget_table.py --memory-only \
         --elves Cortex-M4=build/cortex-m4/platform/firmware \
         --elves Cortex-M4F=build/cortex-m4f/platform/firmware \
         --elves Cortex-M3=build/cortex-m3/platform/firmware
@@ -201,6 +217,8 @@ run_bench() {
             run_firmware cortex-m4f mps2-an386 target_bench 2>&1 | grep -E '^(budget|target:|FAIL)' ;;
         budget-table)
             budget_table ;;
+        memory)
+            memory_table ;;
         track-m4)
             run_firmware cortex-m4 mps2-an386 track_bench 2>&1 ;;
         soak)
@@ -246,6 +264,7 @@ doc_of() {
         streams-host) echo docs/cli.md ;;
         homography-host|target-host|footage-host) echo docs/target.md ;;
         budgets|budgets-m3|budgets-m4f|target-m4f|budget-table) echo docs/firmware.md ;;
+        memory) echo README.md ;;
         soak|fuzz) echo docs/robustness.md ;;
     esac
 }

@@ -4,6 +4,8 @@ and worst, per kind of frame and part, from the firmware images' own output, and
 of every image from its link (the ELF's sections).
 
     budget_table.py --chain PART=OUTPUT ... --target PART=OUTPUT ... --elves PART=DIR ...
+    budget_table.py --memory-only --elves PART=DIR ...   (the README's table: chain_bench and
+                                                          target_bench only)
 
 OUTPUT: what chain_bench (or target_bench) printed under QEMU -icount shift=0; its lines
 "budget FRAME stage=N ... total=N" are read, the median and worst lines it prints are not: both
@@ -109,7 +111,12 @@ def main():
     p.add_argument("--elves", action="append")
     p.add_argument("--size", default="arm-none-eabi-size")
     p.add_argument("--nm", default="arm-none-eabi-nm")
+    # The product images only (the chain and the target tracker), for the README's table.
+    p.add_argument("--memory-only", action="store_true")
     args = p.parse_args()
+    if args.memory_only:
+        memory_table(args, ("chain_bench", "target_bench"))
+        return
 
     print("Quadrangle chain (chain_bench), instructions per QVGA frame; median and worst per "
           "stage, 'worst frame' the largest single-frame total (aim: <= 2 400 000):")
@@ -165,6 +172,11 @@ def main():
               [[part, "median"] + [med[s] for s in stages] + [med["total"], ""],
                [part, "worst"] + [worst[s] for s in stages] + [worst["total"], worst_frame]])
 
+    memory_table(args)
+
+
+# Flash and RAM of the images in each --elves folder (only those named in `images`, if given).
+def memory_table(args, images=None):
     print("Flash and RAM of each image, bytes, from its link (arm-none-eabi-size -A; test frames "
           "and vectors excluded; RAM includes the reserved stack):")
     print()
@@ -174,6 +186,8 @@ def main():
             name = os.path.basename(elf)[:-4]
             if name == "float_canary":
                 continue  # never run: the float check's canary
+            if images is not None and name not in images:
+                continue
             s = section_sizes(args.size, elf)
             ram = s.get(".data", 0) + s.get(".bss", 0) + s.get(".stack", 0)
             flash = sum(v for k, v in s.items() if k not in (".qt_frames", ".bss", ".stack")
