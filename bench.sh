@@ -35,7 +35,7 @@
 #                  binned as quadtrack track bins them, with each line model: corner errors while
 #                  sides are hidden and after; and a 1280x720 clip through ffmpeg and GStreamer
 #                  pipes into quadtrack track -, and OpenCV's vtest.avi (768x576) through ffmpeg
-#   target-host    the filtering-geometry paper's comparison on generated airborne sequences:
+#   target-host    the filtering-geometry paper's comparison on 15 generated airborne sequences:
 #                  template only, filter only, homography only, fused (with and without Table
 #                  III's reset), the paper's version of each of the project's choices (D_rep,
 #                  search region, morphological detection, formulation); error tables and SVG
@@ -196,7 +196,7 @@ run_bench() {
             "$b/bench_homography" ;;
         target-host)
             host_build bench_target
-            "$b/bench_target" --out bench_out/target ;;
+            "$b/bench_target" --out bench_out/target --seeds 15 ;;
         footage-host)
             ensure_packages opencv-doc ffmpeg
             host_build bench_footage
