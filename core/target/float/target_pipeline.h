@@ -266,6 +266,10 @@ public:
             out.estimate.y = static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1);
         } else if (tracking_) {
             out.window = tracker_.predict(g);
+            // A template can only match a target it wholly covers: while the prediction puts
+            // the template across the image border (the target leaving or coming back), the
+            // best placement inside is something else, so nothing is searched.
+            if (!template_inside(out.window.x, out.window.y)) out.window.radius = 0;
             mark(TargetStage::predict);
             TargetMeasurement m;
             // The window in blocks (pixels at step 1): centre and radius.
@@ -314,6 +318,17 @@ public:
     const TargetTracker& tracker() const { return tracker_; }
 
 private:
+    // Whether the template, placed for a target centred at (x, y) px, lies wholly inside the
+    // image [−0.5, width − 0.5] × [−0.5, height − 0.5] (its blocks at step > 1).
+    bool template_inside(float x, float y) const {
+        const float cx = x - static_cast<float>(offset_x_q8_) * (1.0f / 256.0f);
+        const float cy = y - static_cast<float>(offset_y_q8_) * (1.0f / 256.0f);
+        const float hw = 0.5f * static_cast<float>(template_.w * step_);
+        const float hh = 0.5f * static_cast<float>(template_.h * step_);
+        return cx - hw >= -0.5f && cy - hh >= -0.5f &&
+               cx + hw <= static_cast<float>(width_) - 0.5f &&
+               cy + hh <= static_cast<float>(height_) - 0.5f;
+    }
     // A position in px as an integer for the capture window, truncated toward zero; beyond
     // ±1e9 px (and NaN, as -1e9) the window misses every frame alike, so it is held there
     // rather than converted out of range.
