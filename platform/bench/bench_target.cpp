@@ -1,8 +1,8 @@
 // The filtering-geometry paper's comparison (§IV, Figs. 10–12) on generated airborne sequences
 // (platform/scene/ground_sequence.h): template matching only, filter only, homography only and the
 // fused method, plus the fused method without Table III's reset, on the same frames. Prints a
-// table for each of the first sequences and over all of them, one line per sequence on the default's
-// end of the out-of-view spell, and SVG charts of the position error over time.
+// table for each of the first sequences and over all of them, one line per sequence on the
+// default's end of the out-of-view spell, and SVG charts of the position error over time.
 // Usage: bench_target [--out DIR] [--seeds N] [--tables K]
 //   (default bench_out/target, 15 seeds, the tables of the first 3)
 #include <sys/stat.h>
@@ -328,9 +328,10 @@ int main(int argc, char** argv) {
                           !write_plot(out + "/fig12_reset_seed1.svg", reset_plot)))
             return 1;
     }
-    std::printf("\nmedians over %d sequences (seeds 1-%d, the same long sequence otherwise; columns as "
-                "above)\n",
-                seeds, seeds);
+    std::printf(
+        "\nmedians over %d sequences (seeds 1-%d, the same long sequence otherwise; columns as "
+        "above)\n",
+        seeds, seeds);
     print_header();
     double default_end_out = 0;
     for (size_t v = 0; v < nv; ++v) {
@@ -364,8 +365,9 @@ int main(int argc, char** argv) {
         "drift), at the spell's last frame, in the image of the last\nframe in view: what "
         "coasting on a straight line cannot do better than; to loss: as in the columns below\n",
         kVariants[kDefault].name, static_cast<int>(qt::TargetTrackerParams{}.coast_fit_frames));
-    std::printf("\n| seed | out end | homography | filter | line | to loss |\n"
-                "|---:|---:|---:|---:|---:|---:|\n");
+    std::printf(
+        "\n| seed | out end | homography | filter | line | to loss |\n"
+        "|---:|---:|---:|---:|---:|---:|\n");
     for (size_t i = 0; i < splits.size(); ++i) {
         const Summary& d = all[kDefault][i];
         std::printf("| %zu | %.1f | %.2f | %.2f | %.2f | ", i + 1, d.end_out, splits[i].homography,
@@ -377,8 +379,9 @@ int main(int argc, char** argv) {
     }
     std::vector<double> sorted_floors = floors;
     std::sort(sorted_floors.begin(), sorted_floors.end());
-    std::printf("\nthe straight line's own error at the spell's end, median over %d sequences: %.1f px\n",
-                seeds, sorted_floors[sorted_floors.size() / 2]);
+    std::printf(
+        "\nthe straight line's own error at the spell's end, median over %d sequences: %.1f px\n",
+        seeds, sorted_floors[sorted_floors.size() / 2]);
     constexpr double kOutOfViewAimPx = 5;  // issue 22: at the end of a 100-frame spell
     std::printf(
         "\n'%s' error in the last out-of-view frame, median over %d sequences: %.1f px "
