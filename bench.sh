@@ -73,15 +73,22 @@ host_build() {
     cmake --build --preset host -j"$jobs" --target "$@" >/dev/null
 }
 
-# Builds a Cortex-M preset (cortex-m4, cortex-m4f or cortex-m3) and runs one firmware image under
-# QEMU with -icount shift=0 (one SysTick tick per 40 instructions, deterministic). The QEMU CPU is
-# the preset's without the f: QEMU's cortex-m4 has the FPU either way.
+# Builds a Cortex-M preset (cortex-m4, cortex-m4f or cortex-m3): its images and the frames they
+# stream (the photo chain's from opencv-doc, converted with netpbm).
+build_firmware() {
+    ensure_packages cmake make g++ gcc-arm-none-eabi libnewlib-arm-none-eabi \
+        libstdc++-arm-none-eabi-newlib opencv-doc netpbm
+    cmake --preset "$1" >/dev/null
+    cmake --build --preset "$1" -j"$jobs" >/dev/null
+}
+
+# Builds a Cortex-M preset and runs one firmware image under QEMU with -icount shift=0 (one
+# SysTick tick per 40 instructions, deterministic). The QEMU CPU is the preset's without the f:
+# QEMU's cortex-m4 has the FPU either way.
 run_firmware() {
     local preset=$1 machine=$2 image=$3
-    ensure_packages cmake make g++ gcc-arm-none-eabi libnewlib-arm-none-eabi \
-        libstdc++-arm-none-eabi-newlib qemu-system-arm opencv-doc netpbm
-    cmake --preset "$preset" >/dev/null
-    cmake --build --preset "$preset" -j"$jobs" >/dev/null
+    ensure_packages qemu-system-arm
+    build_firmware "$preset"
     qemu-system-arm -M "$machine" -cpu "${preset%f}" -nographic \
         -semihosting-config enable=on,target=native -icount shift=0 \
         -kernel "build/$preset/platform/firmware/$image.elf"
@@ -106,12 +113,7 @@ budget_table() {
 # memory: flash and RAM of the product images, from their link (the README's table).
 memory_table() {
     local preset
-    ensure_packages cmake make g++ gcc-arm-none-eabi libnewlib-arm-none-eabi \
-        libstdc++-arm-none-eabi-newlib opencv-doc netpbm
-    for preset in cortex-m4 cortex-m4f cortex-m3; do
-        cmake --preset "$preset" >/dev/null
-        cmake --build --preset "$preset" -j"$jobs" >/dev/null
-    done
+    for preset in cortex-m4 cortex-m4f cortex-m3; do build_firmware "$preset"; done
     python3 platform/bench/budget_table.py --memory-only \
         --elves Cortex-M4=build/cortex-m4/platform/firmware \
         --elves Cortex-M4F=build/cortex-m4f/platform/firmware \

@@ -53,6 +53,8 @@ struct HoughStats {
                                     // those found and the new one is dropped
     bool budget_exhausted = false;  // stopped at max_walk_steps: not every point was visited
     bool voters_exhausted = false;  // stopped at max_voters: fresh points were left unvisited
+    // Either budget bound: the frame's lines may miss some a full run would find.
+    bool budget_bound() const { return budget_exhausted || voters_exhausted; }
 };
 
 // Working memory of PPHT, as a view (see HoughStorage for the owning type).

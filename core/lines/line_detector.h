@@ -193,8 +193,7 @@ public:
         stats_.cluster.ends_joined = join_corners(lines_, line_count_, params_.corners, corners_);
         mark(FinishStage::cluster);
         const bool cut_short = stats_.edges_dropped > 0 || stats_.hough.segments_dropped > 0 ||
-                               stats_.hough.budget_exhausted || stats_.hough.voters_exhausted ||
-                               stats_.cluster.clusters_dropped > 0;
+                               stats_.hough.budget_bound() || stats_.cluster.clusters_dropped > 0;
         return cut_short ? Status::capacity_exceeded : Status::ok;
     }
 

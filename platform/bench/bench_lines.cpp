@@ -141,7 +141,7 @@ void add(Totals& t, const sc::LineScene& scene, const qt::LineDetectorQvga& det,
     t.edges_dropped += st.edges_dropped;
     t.segments_dropped += st.hough.segments_dropped;
     t.lines_dropped += st.cluster.clusters_dropped;
-    t.budget_exhausted += st.hough.budget_exhausted || st.hough.voters_exhausted ? 1 : 0;
+    t.budget_exhausted += st.hough.budget_bound() ? 1 : 0;
     t.seconds.push_back(seconds);
 }
 
@@ -384,7 +384,7 @@ void vga_time() {
                     static_cast<unsigned>(st.edges_dropped),
                     static_cast<unsigned>(st.hough.segments_dropped),
                     static_cast<unsigned>(st.cluster.clusters_dropped),
-                    st.hough.budget_exhausted || st.hough.voters_exhausted ? 1 : 0);
+                    st.hough.budget_bound() ? 1 : 0);
 #ifdef QT_HAVE_OPENCV
         std::vector<sc::DetectedLine> cv_d;
         for (const cv::Vec4i& s : segs)

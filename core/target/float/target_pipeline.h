@@ -319,15 +319,14 @@ public:
 
 private:
     // Whether the template, placed for a target centred at (x, y) px, lies wholly inside the
-    // image [−0.5, width − 0.5] × [−0.5, height − 0.5] (its blocks at step > 1).
+    // image: its first and last pixels (blocks of step_ px at step > 1) within the frame.
     bool template_inside(float x, float y) const {
-        const float cx = x - static_cast<float>(offset_x_q8_) * (1.0f / 256.0f);
-        const float cy = y - static_cast<float>(offset_y_q8_) * (1.0f / 256.0f);
-        const float hw = 0.5f * static_cast<float>(template_.w * step_);
-        const float hh = 0.5f * static_cast<float>(template_.h * step_);
-        return cx - hw >= -0.5f && cy - hh >= -0.5f &&
-               cx + hw <= static_cast<float>(width_) - 0.5f &&
-               cy + hh <= static_cast<float>(height_) - 0.5f;
+        const float left = template_first_px(x, offset_x_q8_, template_.w);
+        const float top = template_first_px(y, offset_y_q8_, template_.h);
+        return left >= 0 && top >= 0 &&
+               left + static_cast<float>(template_.w * step_ - 1) <=
+                   static_cast<float>(width_ - 1) &&
+               top + static_cast<float>(template_.h * step_ - 1) <= static_cast<float>(height_ - 1);
     }
     // A position in px as an integer for the capture window, truncated toward zero; beyond
     // ±1e9 px (and NaN, as -1e9) the window misses every frame alike, so it is held there
@@ -379,13 +378,18 @@ private:
     int64_t box_blocks(int64_t n) const { return (n + step_ - 1) / step_; }
     // The block of the grid from origin o whose first pixel is frame pixel a.
     int64_t box_block(int64_t a, int64_t o) const { return floor_div(a - o, step_); }
-    // The grid origin, [0, step), that puts a block edge at the template's expected top-left:
-    // the target's expected centre (px) less its offset from the template's centre (1/256 px)
-    // less half the template (`blocks` a side). 0 at step 1.
-    uint16_t grid_origin(float centre, int32_t offset_q8, int32_t blocks) const {
+    // The template's first pixel along one axis, px, for a target centred at `centre` px: the
+    // centre less the target's offset from the template's centre (1/256 px) less half the
+    // template (`blocks` a side, step_ px each).
+    float template_first_px(float centre, int32_t offset_q8, int32_t blocks) const {
         const float s = static_cast<float>(step_);
-        const float left = centre - static_cast<float>(offset_q8) * (1.0f / 256.0f) -
-                           0.5f * s * static_cast<float>(blocks - 1) - 0.5f * (s - 1.0f);
+        return centre - static_cast<float>(offset_q8) * (1.0f / 256.0f) -
+               0.5f * s * static_cast<float>(blocks - 1) - 0.5f * (s - 1.0f);
+    }
+    // The grid origin, [0, step), that puts a block edge at the template's expected first
+    // pixel. 0 at step 1.
+    uint16_t grid_origin(float centre, int32_t offset_q8, int32_t blocks) const {
+        const float left = template_first_px(centre, offset_q8, blocks);
         const int64_t a = clamped_px(left < 0 ? left - 0.5f : left + 0.5f);
         return static_cast<uint16_t>(floor_mod(a, step_));
     }
