@@ -20,7 +20,8 @@
 #                  Cortex-M4 (QEMU -icount), output checksums against the host's
 #   quads-host     board detection on 3 x 500 generated scenes: detection rate, corner RMSE,
 #                  false detections, time, beside OpenCV's squares.cpp recipe
-#   photos-host    boards composited onto real photographs (opencv-doc; held out: python3-skimage),
+#   photos-host    boards composited onto real photographs (opencv-doc; held out: python3-skimage;
+#                  patterned: opencv-doc's checkerboard calibration shots),
 #                  QVGA and VGA, unoccluded / occluded / board-free, 1500 scenes each (a point
 #                  moved by up to 0.6 with PPHT's visiting order alone at 500; other sizes:
 #                  BENCH_PHOTO_SCENES=N), beside OpenCV's squares.cpp recipe, and a 150-frame
@@ -177,12 +178,15 @@ run_bench() {
             "$b/bench_quads" ;;
         photos-host)
             ensure_packages opencv-doc netpbm python3-skimage
-            host_build bench_photo_boards real_photos heldout_photos
+            host_build bench_photo_boards real_photos heldout_photos patterned_photos
             rm -rf bench_out/photos && mkdir -p bench_out/photos
             "$b/bench_photo_boards" build/host/photos --scenes "${BENCH_PHOTO_SCENES:-1500}" \
                 --pictures bench_out/photos
             echo "Held out: photographs never used to choose a parameter (python3-skimage)."
             "$b/bench_photo_boards" build/host/photos_heldout --scenes "${BENCH_PHOTO_SCENES:-1500}" \
+                --no-sequence
+            echo "Patterned backgrounds: opencv-doc's checkerboard calibration shots."
+            "$b/bench_photo_boards" build/host/photos_patterned --scenes "${BENCH_PHOTO_SCENES:-1500}" \
                 --no-sequence ;;
         track-host)
             host_build bench_track

@@ -110,6 +110,13 @@ public:
                 ++quad_stats_.rejected_interior;
                 continue;
             }
+            if (params_.refine.max_lines_across != 255 &&
+                count_lines_across(lines_.lines(), lines_.line_count(), quad.corners,
+                                   params_.refine.inside_margin,
+                                   half_shortest_side(quad)) > params_.refine.max_lines_across) {
+                ++quad_stats_.rejected_across;
+                continue;
+            }
             // Two candidates that refit to one quadrangle (corners within collinear_distance)
             // are one: the better scored stays.
             uint16_t dup = 0;
@@ -171,6 +178,15 @@ private:
             for (int i = 0; i < 4; ++i)
                 if (quads_[k].lines[i] == line) return true;
         return false;
+    }
+
+    static q16_16 half_shortest_side(const Quad& quad) {
+        q16_16 shortest = distance(quad.corners[0], quad.corners[1]);
+        for (int i = 1; i < 4; ++i) {
+            const q16_16 d = distance(quad.corners[i], quad.corners[(i + 1) & 3]);
+            shortest = d < shortest ? d : shortest;
+        }
+        return q16_16::from_raw(shortest.raw / 2);
     }
 
     static bool same_corners(const Quad& a, const Quad& b, q16_16 tolerance) {

@@ -50,6 +50,8 @@ struct QuadStats {
                                           // sides (board_detector.h, quad_refine.h)
     uint16_t rejected_interior = 0;       // of those, turned down for the edges inside them
                                           // (quad_interior.h)
+    uint16_t rejected_across = 0;         // of those, turned down for the lines across them
+                                          // (quad_interior.h, count_lines_across)
 };
 
 // One parallel pair: two line indices.

@@ -68,6 +68,73 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
     return count;
 }
 
+namespace {
+
+// The share of segment a→b (1/16 px) lying in every half-plane g_s(p) >= 0 of a convex
+// quadrangle, g_s(p) = dx[s]·(p.y − cy[s]) − dy[s]·(p.x − cx[s]) − need[s], in 2^-20 of its
+// length. |dx|, |dy|, |p − c| < 2^16 (1/16 px, frames up to 2048 px) and |need| < 2^24 (margins
+// up to 16 px), so |g| < 2^33 and |g|·2^20 < 2^53.
+int64_t share_inside20(int32_t ax, int32_t ay, int32_t bx, int32_t by, const int32_t* cx,
+                       const int32_t* cy, const int32_t* dx, const int32_t* dy,
+                       const int64_t* need) {
+    int64_t lo = 0, hi = int64_t{1} << 20;
+    for (int s = 0; s < 4; ++s) {
+        const int64_t ga = static_cast<int64_t>(dx[s]) * (ay - cy[s]) -
+                           static_cast<int64_t>(dy[s]) * (ax - cx[s]) - need[s];
+        const int64_t gb = static_cast<int64_t>(dx[s]) * (by - cy[s]) -
+                           static_cast<int64_t>(dy[s]) * (bx - cx[s]) - need[s];
+        if (ga >= 0 && gb >= 0) continue;
+        if (ga < 0 && gb < 0) return 0;
+        if (ga < 0) {
+            const int64_t t = (-ga * (int64_t{1} << 20)) / (gb - ga);  // enters here
+            lo = t > lo ? t : lo;
+        } else {
+            const int64_t t = (ga * (int64_t{1} << 20)) / (ga - gb);  // leaves here
+            hi = t < hi ? t : hi;
+        }
+    }
+    return hi > lo ? hi - lo : 0;
+}
+
+}  // namespace
+
+uint16_t count_lines_across(const Segment* lines, uint16_t n, const Point16 corners[4],
+                            q16_16 margin, q16_16 min_inside) {
+    const int64_t area2 = shoelace2(corners);
+    if (area2 == 0) return 0;
+    const int32_t sign = area2 < 0 ? -1 : 1;
+    // The sides as half-planes, as in count_inside_edges: `inner` by the margin inside,
+    // `outer` by the margin outside.
+    int32_t cx[4], cy[4], dx[4], dy[4];
+    int64_t inner[4], outer[4];
+    for (int i = 0; i < 4; ++i) cx[i] = sixteenths(corners[i].x), cy[i] = sixteenths(corners[i].y);
+    const int64_t margin16 = sixteenths(margin), min16 = sixteenths(min_inside);
+    for (int i = 0; i < 4; ++i) {
+        const int j = (i + 1) & 3;
+        dx[i] = sign * (cx[j] - cx[i]);
+        dy[i] = sign * (cy[j] - cy[i]);
+        const int64_t len2 =
+            static_cast<int64_t>(dx[i]) * dx[i] + static_cast<int64_t>(dy[i]) * dy[i];
+        inner[i] = margin16 * isqrt64(static_cast<uint64_t>(len2));
+        outer[i] = -inner[i];
+    }
+    uint16_t across = 0;
+    for (uint16_t k = 0; k < n; ++k) {
+        const int32_t ax = sixteenths(lines[k].x1), ay = sixteenths(lines[k].y1);
+        const int32_t bx = sixteenths(lines[k].x2), by = sixteenths(lines[k].y2);
+        const int64_t len16 = static_cast<int64_t>(
+            isqrt64(static_cast<uint64_t>(static_cast<int64_t>(bx - ax) * (bx - ax) +
+                                          static_cast<int64_t>(by - ay) * (by - ay))));
+        if (len16 < min16) continue;
+        const int64_t in16 = (share_inside20(ax, ay, bx, by, cx, cy, dx, dy, inner) * len16) >> 20;
+        if (in16 < min16) continue;
+        const int64_t near16 =
+            (share_inside20(ax, ay, bx, by, cx, cy, dx, dy, outer) * len16) >> 20;
+        if (len16 - near16 >= margin16) ++across;
+    }
+    return across;
+}
+
 bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent) {
     if (limit_percent == 0) return true;
     return static_cast<uint64_t>(count.cells) * 400u * isqrt32(uint32_t{height} << 16) <=

@@ -1,4 +1,5 @@
-// The inside of a quadrangle: how much of it holds edge points, away from its sides.
+// The inside of a quadrangle: how much of it holds edge points, away from its sides, and how
+// many lines run across it.
 //
 // Why: the board is blank — a white card, at most faint print. The rectangles a photograph
 // holds by itself (a box's printed face, a book, a poster, a window with a room behind it)
@@ -20,6 +21,7 @@
 
 #include "base/fixed.h"
 #include "lines/edge_list.h"
+#include "lines/segment.h"
 #include "quads/quad_rules.h"
 
 namespace qt {
@@ -41,5 +43,14 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
 // cells · 400 · √(height) <= limit_percent · area · √240 (the roots as isqrt of the value
 // · 2^16). 0 turns the test off.
 bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent);
+
+// The lines of `lines` that run across the convex quadrangle `corners` (either orientation):
+// over at least `min_inside` px farther than `margin` inside every side, and over at least
+// `margin` px farther than `margin` outside a side. A board hides what lies behind it, so the
+// lines through its inside stop at its sides (its print) or are an occluder's (an arm: two);
+// a quadrangle cut out of a pattern of lines (a checkerboard, tiles, a grid of windows) is
+// crossed by the pattern's lines. Work: two clips of each line against the four sides.
+uint16_t count_lines_across(const Segment* lines, uint16_t n, const Point16 corners[4],
+                            q16_16 margin, q16_16 min_inside);
 
 }  // namespace qt

@@ -46,6 +46,10 @@ struct RefineParams {
     // content with strong edges).
     uint8_t max_inside_edge_cells_percent = 16;
     q16_16 inside_margin = q16_16::from_int(4);  // px
+    // A kept quadrangle is crossed by at most this many lines of the line list, each inside it
+    // over at least half its shortest side (quad_interior.h, count_lines_across); 255: not
+    // tested (a board seen through a grid, a window's bars).
+    uint8_t max_lines_across = 2;
 };
 
 // The edge evidence of a quadrangle's sides: per side, the steps along it (pixels of its major

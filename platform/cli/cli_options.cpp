@@ -317,6 +317,13 @@ const FlagTable<DetectOptions, Command>& table() {
                 [](DetectOptions& o) -> uint8_t& {
                     return o.params.refine.max_inside_edge_cells_percent;
                 }),
+            integer<uint8_t>(
+                "max-lines-across", "N",
+                "a kept quadrangle is crossed by at most this many lines, each inside it over at "
+                "least half its shortest side (a pattern's lines cross it, a board's print does "
+                "not), 0..255 (255: not tested)",
+                0, 255,
+                [](DetectOptions& o) -> uint8_t& { return o.params.refine.max_lines_across; }),
             decimal("inside-margin", "PX",
                     "edge points this close to a side are not counted inside, pixels, 0..16", 0, 16,
                     [](DetectOptions& o) -> q16_16& { return o.params.refine.inside_margin; }),

@@ -139,3 +139,109 @@ TEST_CASE("a blank board is kept, a printed rectangle of the same outline is not
         CHECK(near);
     }
 }
+
+namespace {
+
+Segment seg(int32_t x1, int32_t y1, int32_t x2, int32_t y2) {
+    Segment s{};
+    s.x1 = q16_16::from_int(x1), s.y1 = q16_16::from_int(y1);
+    s.x2 = q16_16::from_int(x2), s.y2 = q16_16::from_int(y2);
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("lines across a square: inside over the least length and out past a side", "[interior]") {
+    // The square (10, 10)–(50, 50), margin 4: "inside" is 14 < x, y < 46, "outside" is beyond
+    // 6 ≤ x, y ≤ 54, and a line counts with at least 20 px inside and 4 px outside.
+    const Point16 sq[4] = {corner(10, 10), corner(10, 50), corner(50, 50), corner(50, 10)};
+    const q16_16 m = q16_16::from_int(4), least = q16_16::from_int(20);
+    auto across = [&](const Segment& s) { return count_lines_across(&s, 1, sq, m, least); };
+    CHECK(across(seg(0, 30, 60, 30)) == 1);   // right through: 32 px in, 6 + 6 px out
+    CHECK(across(seg(30, 0, 30, 60)) == 1);   // the same, upright
+    CHECK(across(seg(60, 30, 0, 30)) == 1);   // either direction
+    CHECK(across(seg(0, 30, 40, 30)) == 1);   // in from the left (26 px in, 6 out), ends inside
+    CHECK(across(seg(20, 30, 44, 30)) == 0);  // print: 24 px in, never out
+    CHECK(across(seg(0, 30, 30, 30)) == 0);   // 16 px in: too little
+    CHECK(across(seg(9, 30, 60, 30)) == 1);   // 32 px in, 6 px out on the right only
+    CHECK(across(seg(9, 30, 57, 30)) == 0);   // 3 px out: within the margin's reach
+    CHECK(across(seg(10, 0, 10, 60)) == 0);   // along a side: never inside by the margin
+    CHECK(across(seg(0, 70, 60, 70)) == 0);   // outside
+    CHECK(across(seg(0, 0, 60, 60)) == 1);    // the diagonal: 45 px in
+    const Segment all[] = {seg(0, 30, 60, 30), seg(30, 0, 30, 60), seg(20, 30, 44, 30)};
+    CHECK(count_lines_across(all, 3, sq, m, least) == 2);
+    const Point16 cw[4] = {sq[0], sq[3], sq[2], sq[1]};  // either winding
+    CHECK(count_lines_across(all, 3, cw, m, least) == 2);
+}
+
+namespace {
+
+// A checkerboard target: 8 × 6 squares of 28 px (grey 30 on a card of grey 225, 8 px of card
+// round the pattern), turned 8°, on a grey background. The card is a bright quadrangle; the
+// pattern's lines make more of every size.
+struct Checkerboard {
+    io::GreyImage image;
+    std::vector<scene::Point2> card;
+};
+
+Checkerboard checkerboard_frame() {
+    scene::SceneOptions o;
+    o.background = 120;
+    o.blur_sigma = 0.8;
+    o.noise_sigma = 3;
+    o.seed = 5;
+    scene::LineScene ls(o);
+    const double c = std::cos(8 * M_PI / 180), s = std::sin(8 * M_PI / 180);
+    auto at = [&](double u, double v) {
+        return scene::Point2{160 + c * (u - 112) - s * (v - 84),
+                             120 + s * (u - 112) + c * (v - 84)};
+    };
+    Checkerboard b;
+    b.card = {at(-8, -8), at(-8, 176), at(232, 176), at(232, -8)};
+    ls.add_polygon(b.card, 225);
+    for (int row = 0; row < 6; ++row)
+        for (int col = 0; col < 8; ++col) {
+            if ((row + col) % 2) continue;
+            const double u = col * 28, v = row * 28;
+            ls.add_polygon({at(u, v), at(u, v + 28), at(u + 28, v + 28), at(u + 28, v)}, 30);
+        }
+    b.image = ls.render();
+    return b;
+}
+
+// Whether every corner of q lies within 3 px of a corner of `outline`.
+bool is_outline(const Quad& q, const std::vector<scene::Point2>& outline) {
+    for (int i = 0; i < 4; ++i) {
+        bool near = false;
+        for (const scene::Point2& t : outline)
+            near = near || std::hypot(q.corners[i].x.raw / 65536.0 - t.x,
+                                      q.corners[i].y.raw / 65536.0 - t.y) < 3;
+        if (!near) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("no quadrangle is cut out of a checkerboard's lines", "[interior]") {
+    // Without the test the card comes with quadrangles whose sides are the card's border and the
+    // pattern's lines; each of those is crossed by the pattern's other lines, the card is not
+    // (its lines end at the pattern's border, inside it).
+    const Checkerboard board = checkerboard_frame();
+    BoardParams params;
+    params.refine.max_lines_across = 255;
+    const Status s = io::push_frame(g_det, board.image, params);
+    REQUIRE((s == Status::ok || s == Status::capacity_exceeded));
+    int cut_out = 0;
+    for (uint16_t q = 0; q < g_det.quad_count(); ++q)
+        cut_out += !is_outline(g_det.quads()[q], board.card);
+    CHECK(cut_out >= 1);
+    CHECK(g_det.quad_stats().rejected_across == 0);
+
+    params.refine.max_lines_across = BoardParams{}.refine.max_lines_across;
+    REQUIRE(io::push_frame(g_det, board.image, params) == s);
+    REQUIRE(g_det.quad_count() >= 1);
+    for (uint16_t q = 0; q < g_det.quad_count(); ++q)
+        CHECK(is_outline(g_det.quads()[q], board.card));
+    CHECK(g_det.quad_stats().rejected_across >= 1);
+}
