@@ -17,8 +17,9 @@ struct Qvga {
     static constexpr uint16_t edge_points = 4096;
     static constexpr uint16_t theta_bins = 90, rho_step = 2;
     static constexpr uint16_t segments = 64, lines = 32;
-    // Quadrangles: parallel line pairs searched, quadrangles kept.
-    static constexpr uint16_t parallel_pairs = 128, quads = 4;
+    // Quadrangles: parallel line pairs searched; candidates ranked by their lines' coverage,
+    // verified by their edge evidence in that order until `quads` are kept.
+    static constexpr uint16_t parallel_pairs = 128, quad_candidates = 8, quads = 4;
     // Target tracker: Harris corners a frame, their patches' radius (9 × 9 at 4), the largest
     // template side and the side of the region captured around the expected target, px.
     static constexpr uint16_t features = 96;

@@ -28,6 +28,8 @@ template <class Capacity>
 class BoardDetector {
     using Lines = LineDetector<Capacity>;
     static constexpr uint16_t PairCapacity = Capacity::parallel_pairs, MaxQuads = Capacity::quads;
+    static constexpr uint16_t MaxCandidates = Capacity::quad_candidates;
+    static_assert(MaxCandidates >= MaxQuads, "candidates: at least the quadrangles kept");
     static_assert(Lines::max_lines() > 4 * MaxQuads,
                   "room for the completed sides beside the kept quadrangles' lines");
 
@@ -35,7 +37,7 @@ public:
     static constexpr uint32_t ram_bytes() { return sizeof(BoardDetector); }
     static constexpr uint32_t quad_bytes() {
         return sizeof(LinePair) * PairCapacity + sizeof(SinCos) * Lines::max_lines() +
-               (sizeof(Quad) + 5 * sizeof(Segment)) * MaxQuads;
+               (sizeof(Quad) + sizeof(Segment)) * MaxCandidates + 4 * sizeof(Segment) * MaxQuads;
     }
     static constexpr uint16_t max_quads() { return MaxQuads; }
 
@@ -70,12 +72,13 @@ public:
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
         const Status q =
             detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(),
-                         params_.quads, pairs_, PairCapacity, normals_, quads_, MaxQuads,
+                         params_.quads, pairs_, PairCapacity, normals_, quads_, MaxCandidates,
                          &quad_count_, &quad_stats_, completed_);
         // Each candidate's sides refitted to the edge points between its corners and verified
-        // by that evidence, which also becomes its score.
+        // by that evidence, which also becomes its score; in rank order until MaxQuads are
+        // kept (a pattern's own quadrangles can outrank the board and fail).
         uint16_t kept = 0;
-        for (uint16_t k = 0; k < quad_count_; ++k) {
+        for (uint16_t k = 0; k < quad_count_ && kept < MaxQuads; ++k) {
             Quad quad = quads_[k];
             bool seen = false;
             for (uint16_t j = 0; j < kept && !seen; ++j)
@@ -100,6 +103,12 @@ public:
             if (!rule_corners_inside(quad.corners, lines_.width(), lines_.height(),
                                      params_.quads)) {
                 ++quad_stats_.rejected_inside;
+                continue;
+            }
+            if (params_.refine.max_junction_corners < 4 &&
+                junction_corners(lines_.edges(), quad.corners, params_.refine) >
+                    params_.refine.max_junction_corners) {
+                ++quad_stats_.rejected_junctions;
                 continue;
             }
             const uint8_t inside_limit = params_.refine.max_inside_edge_cells_percent;
@@ -203,9 +212,9 @@ private:
     Lines lines_;
     LinePair pairs_[PairCapacity] = {};
     SinCos normals_[Lines::max_lines()] = {};
-    Quad quads_[MaxQuads] = {};
-    Segment sides_[MaxQuads][4] = {};   // each kept quadrangle's refitted sides
-    Segment completed_[MaxQuads] = {};  // detect_quads' completed sides
+    Quad quads_[MaxCandidates] = {};         // the candidates, then the kept ones first
+    Segment sides_[MaxQuads][4] = {};        // each kept quadrangle's refitted sides
+    Segment completed_[MaxCandidates] = {};  // detect_quads' completed sides
     BoardParams params_;
     QuadStats quad_stats_;
     uint16_t quad_count_ = 0;

@@ -52,6 +52,8 @@ struct QuadStats {
                                           // (quad_interior.h)
     uint16_t rejected_across = 0;         // of those, turned down for the lines across them
                                           // (quad_interior.h, count_lines_across)
+    uint16_t rejected_junctions = 0;      // of those, turned down for corners where both sides
+                                          // run on (quad_refine.h, junction_corners)
 };
 
 // One parallel pair: two line indices.

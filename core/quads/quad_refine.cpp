@@ -279,6 +279,43 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
     return mask;
 }
 
+uint8_t junction_corners(const EdgeList& edges, const Point16 corners[4],
+                         const RefineParams& params) {
+    const int32_t margin32 = to32(params.end_margin), band32 = to32(params.fine_band);
+    // runs_on[i]: bit 0, side i's line runs on past corner i; bit 1, past corner i + 1.
+    uint8_t runs_on[4] = {};
+    for (int i = 0; i < 4; ++i) {
+        const Point16 a = corners[i], b = corners[(i + 1) & 3];
+        const int64_t len = distance(a, b).raw;  // q16_16
+        if (len <= 0) continue;
+        const int32_t len32 = static_cast<int32_t>(shr_round_half_away(len, 11));
+        const int32_t reach32 = len32 / 4 > 6 * 32 ? len32 / 4 : 6 * 32;
+        const int32_t ux = static_cast<int32_t>(
+            ((static_cast<int64_t>(b.x.raw) - a.x.raw) * (int64_t{1} << 30)) / len);
+        const int32_t uy = static_cast<int32_t>(
+            ((static_cast<int64_t>(b.y.raw) - a.y.raw) * (int64_t{1} << 30)) / len);
+        // Either polarity (a checkerboard's lines run on reversed); q2_30 -> ±2^16 as in
+        // polarity_of.
+        const Polarity either{direction_bin(-(uy >> 14), ux >> 14), false};
+        const int32_t stretch[2][2] = {{-margin32 - reach32, -margin32},
+                                       {len32 + margin32, len32 + margin32 + reach32}};
+        for (int e = 0; e < 2; ++e) {
+            const Walk w{to32(a.x), to32(a.y), ux, uy, stretch[e][0], stretch[e][1]};
+            Moments m;
+            uint32_t steps = 0;
+            uint8_t ends = 0;
+            const uint32_t held = gather(edges, w, band32, either, m, &steps, &ends);
+            if (steps > 0 && 2u * held >= steps)
+                runs_on[i] = static_cast<uint8_t>(runs_on[i] | (1u << e));
+        }
+    }
+    uint8_t junctions = 0;
+    for (int i = 0; i < 4; ++i)  // corner i: side i − 1 past its end and side i past its start
+        junctions = static_cast<uint8_t>(junctions +
+                                         (((runs_on[(i + 3) & 3] >> 1) & runs_on[i] & 1u) != 0));
+    return junctions;
+}
+
 bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params,
                      q16_16* share) {
     uint32_t held = 0, steps = 0;

@@ -50,6 +50,9 @@ struct RefineParams {
     // over at least half its shortest side (quad_interior.h, count_lines_across); 255: not
     // tested (a board seen through a grid, a window's bars).
     uint8_t max_lines_across = 2;
+    // A kept quadrangle has at most this many corners where both its sides run on
+    // (junction_corners); 4: not tested.
+    uint8_t max_junction_corners = 1;
 };
 
 // The edge evidence of a quadrangle's sides: per side, the steps along it (pixels of its major
@@ -79,5 +82,12 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
 // params.verify is false). completed: bit i when side i was completed rather than found.
 bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params,
                      q16_16* share);
+
+// The corners of a quadrangle where both sides' lines run on past it: each side's line has
+// edge points of either polarity (within fine_band) on at least half the steps of a stretch
+// beyond the corner (past end_margin, a quarter of the side long and at least 6 px). A board's
+// corner ends both its sides; a checkerboard's square has a crossing at each corner.
+uint8_t junction_corners(const EdgeList& edges, const Point16 corners[4],
+                         const RefineParams& params);
 
 }  // namespace qt

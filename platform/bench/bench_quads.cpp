@@ -96,8 +96,8 @@ bool ours(const qt::io::GreyImage& img, Corners& c) {
 }
 
 // The paper's five rules alone: no contrast test, no support requirement, no edge evidence, no
-// completion of a hidden side, no test of the inside or of lines across (the sides are still
-// refined).
+// completion of a hidden side, no test of the inside, of lines across or of crossings at the
+// corners (the sides are still refined).
 bool rules_only(const qt::io::GreyImage& img, Corners& c) {
     qt::BoardParams p;
     p.quads.contrast = qt::Contrast::any;
@@ -107,6 +107,7 @@ bool rules_only(const qt::io::GreyImage& img, Corners& c) {
     p.refine.verify = false;
     p.refine.max_inside_edge_cells_percent = 0;
     p.refine.max_lines_across = 255;
+    p.refine.max_junction_corners = 4;
     return detect_with(img, p, c);
 }
 

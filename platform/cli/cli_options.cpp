@@ -324,6 +324,12 @@ const FlagTable<DetectOptions, Command>& table() {
                 "not), 0..255 (255: not tested)",
                 0, 255,
                 [](DetectOptions& o) -> uint8_t& { return o.params.refine.max_lines_across; }),
+            integer<uint8_t>(
+                "max-junction-corners", "N",
+                "a kept quadrangle has at most this many corners where both its sides run on past "
+                "it (a checkerboard's square), 0..4 (4: not tested)",
+                0, 4,
+                [](DetectOptions& o) -> uint8_t& { return o.params.refine.max_junction_corners; }),
             decimal("inside-margin", "PX",
                     "edge points this close to a side are not counted inside, pixels, 0..16", 0, 16,
                     [](DetectOptions& o) -> q16_16& { return o.params.refine.inside_margin; }),
