@@ -9,6 +9,35 @@ namespace {
 // q16.16 pixels to 1/16 pixel (floor): frames up to 2048 px give |values| < 2^15.
 int32_t sixteenths(q16_16 v) { return v.raw >> 12; }
 
+// A convex quadrangle's sides as half-planes (all in 1/16 px): p is inside side i by the margin
+// when g_i(p) = dx[i]·(p.y − cy[i]) − dy[i]·(p.x − cx[i]) − need[i] >= 0 (> 0: by more), with
+// need[i] = margin · |d_i| and d_i the side's direction times the orientation's sign, so that the
+// inside is on the positive side of every one. A negative margin reaches outside. 32 × 32 →
+// 64-bit products only (one SMULL each on a Cortex-M).
+struct HalfPlanes {
+    int32_t cx[4], cy[4], dx[4], dy[4];
+    int64_t need[4];
+
+    HalfPlanes(const Point16 corners[4], int32_t sign, int64_t margin16) {
+        for (int i = 0; i < 4; ++i) {
+            cx[i] = sixteenths(corners[i].x);
+            cy[i] = sixteenths(corners[i].y);
+        }
+        for (int i = 0; i < 4; ++i) {
+            const int j = (i + 1) & 3;
+            dx[i] = sign * (cx[j] - cx[i]);
+            dy[i] = sign * (cy[j] - cy[i]);
+            const int64_t len2 =
+                static_cast<int64_t>(dx[i]) * dx[i] + static_cast<int64_t>(dy[i]) * dy[i];
+            need[i] = margin16 * static_cast<int64_t>(isqrt64(static_cast<uint64_t>(len2)));
+        }
+    }
+    int64_t g(int s, int32_t x, int32_t y) const {
+        return static_cast<int64_t>(dx[s]) * (y - cy[s]) -
+               static_cast<int64_t>(dy[s]) * (x - cx[s]) - need[s];
+    }
+};
+
 }  // namespace
 
 InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4], q16_16 margin) {
@@ -18,23 +47,9 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
     if (area2 == 0) return count;
     const int32_t sign = area2 < 0 ? -1 : 1;
     count.area_px = static_cast<uint32_t>((area2 < 0 ? -area2 : area2) >> 33);
-    int32_t cx[4], cy[4];
-    for (int i = 0; i < 4; ++i) cx[i] = sixteenths(corners[i].x), cy[i] = sixteenths(corners[i].y);
-    // Side i as a half-plane: inside by more than the margin when
-    // dx·(y − cy) − dy·(x − cx) > margin · |d| (all in 1/16 px), d the side's direction times
-    // the orientation's sign, so that the inside is on the positive side of every one.
-    // 32 × 32 → 64-bit products only (one SMULL each on a Cortex-M).
-    int32_t dx[4], dy[4];
-    int64_t need[4];
-    const int64_t margin16 = sixteenths(margin);
-    for (int i = 0; i < 4; ++i) {
-        const int j = (i + 1) & 3;
-        dx[i] = sign * (cx[j] - cx[i]);
-        dy[i] = sign * (cy[j] - cy[i]);
-        const int64_t len2 =
-            static_cast<int64_t>(dx[i]) * dx[i] + static_cast<int64_t>(dy[i]) * dy[i];
-        need[i] = margin16 * isqrt64(static_cast<uint64_t>(len2));
-    }
+    const HalfPlanes h(corners, sign, sixteenths(margin));
+    const int32_t* cx = h.cx;
+    const int32_t* cy = h.cy;
     int32_t x_lo = cx[0], x_hi = cx[0], y_lo = cy[0], y_hi = cy[0];
     for (int i = 1; i < 4; ++i) {
         x_lo = cx[i] < x_lo ? cx[i] : x_lo;
@@ -53,10 +68,7 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
             const uint32_t x = ep::x(edges[static_cast<uint16_t>(i)]);
             const int32_t px = 16 * static_cast<int32_t>(x), py = 16 * y;
             bool inside = true;
-            for (int s = 0; s < 4 && inside; ++s)
-                inside = static_cast<int64_t>(dx[s]) * (py - cy[s]) -
-                             static_cast<int64_t>(dy[s]) * (px - cx[s]) >
-                         need[s];
+            for (int s = 0; s < 4 && inside; ++s) inside = h.g(s, px, py) > 0;
             if (!inside) continue;
             const uint32_t cell = x >> 1, bit = 1u << (cell & 31u);
             count.cells += (occupied[cell >> 5] & bit) == 0;
@@ -70,19 +82,13 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
 
 namespace {
 
-// The share of segment a→b (1/16 px) lying in every half-plane g_s(p) >= 0 of a convex
-// quadrangle, g_s(p) = dx[s]·(p.y − cy[s]) − dy[s]·(p.x − cx[s]) − need[s], in 2^-20 of its
-// length. |dx|, |dy|, |p − c| < 2^16 (1/16 px, frames up to 2048 px) and |need| < 2^24 (margins
-// up to 16 px), so |g| < 2^33 and |g|·2^20 < 2^53.
-int64_t share_inside20(int32_t ax, int32_t ay, int32_t bx, int32_t by, const int32_t* cx,
-                       const int32_t* cy, const int32_t* dx, const int32_t* dy,
-                       const int64_t* need) {
+// The share of segment a→b (1/16 px) lying in every half-plane of h (g >= 0), in 2^-20 of its
+// length. |dx|, |dy|, |p − c| < 2^16 (frames up to 2048 px) and |need| < 2^24 (margins up to
+// 16 px), so |g| < 2^33 and |g|·2^20 < 2^53.
+int64_t share_inside20(const HalfPlanes& h, int32_t ax, int32_t ay, int32_t bx, int32_t by) {
     int64_t lo = 0, hi = int64_t{1} << 20;
     for (int s = 0; s < 4; ++s) {
-        const int64_t ga = static_cast<int64_t>(dx[s]) * (ay - cy[s]) -
-                           static_cast<int64_t>(dy[s]) * (ax - cx[s]) - need[s];
-        const int64_t gb = static_cast<int64_t>(dx[s]) * (by - cy[s]) -
-                           static_cast<int64_t>(dy[s]) * (bx - cx[s]) - need[s];
+        const int64_t ga = h.g(s, ax, ay), gb = h.g(s, bx, by);
         if (ga >= 0 && gb >= 0) continue;
         if (ga < 0 && gb < 0) return 0;
         if (ga < 0) {
@@ -103,21 +109,9 @@ uint16_t count_lines_across(const Segment* lines, uint16_t n, const Point16 corn
     const int64_t area2 = shoelace2(corners);
     if (area2 == 0) return 0;
     const int32_t sign = area2 < 0 ? -1 : 1;
-    // The sides as half-planes, as in count_inside_edges: `inner` by the margin inside,
-    // `outer` by the margin outside.
-    int32_t cx[4], cy[4], dx[4], dy[4];
-    int64_t inner[4], outer[4];
-    for (int i = 0; i < 4; ++i) cx[i] = sixteenths(corners[i].x), cy[i] = sixteenths(corners[i].y);
     const int64_t margin16 = sixteenths(margin), min16 = sixteenths(min_inside);
-    for (int i = 0; i < 4; ++i) {
-        const int j = (i + 1) & 3;
-        dx[i] = sign * (cx[j] - cx[i]);
-        dy[i] = sign * (cy[j] - cy[i]);
-        const int64_t len2 =
-            static_cast<int64_t>(dx[i]) * dx[i] + static_cast<int64_t>(dy[i]) * dy[i];
-        inner[i] = margin16 * isqrt64(static_cast<uint64_t>(len2));
-        outer[i] = -inner[i];
-    }
+    // By the margin inside every side, and by the margin outside.
+    const HalfPlanes inner(corners, sign, margin16), outer(corners, sign, -margin16);
     uint16_t across = 0;
     for (uint16_t k = 0; k < n; ++k) {
         const int32_t ax = sixteenths(lines[k].x1), ay = sixteenths(lines[k].y1);
@@ -126,10 +120,8 @@ uint16_t count_lines_across(const Segment* lines, uint16_t n, const Point16 corn
             isqrt64(static_cast<uint64_t>(static_cast<int64_t>(bx - ax) * (bx - ax) +
                                           static_cast<int64_t>(by - ay) * (by - ay))));
         if (len16 < min16) continue;
-        const int64_t in16 = (share_inside20(ax, ay, bx, by, cx, cy, dx, dy, inner) * len16) >> 20;
-        if (in16 < min16) continue;
-        const int64_t near16 =
-            (share_inside20(ax, ay, bx, by, cx, cy, dx, dy, outer) * len16) >> 20;
+        if (((share_inside20(inner, ax, ay, bx, by) * len16) >> 20) < min16) continue;
+        const int64_t near16 = (share_inside20(outer, ax, ay, bx, by) * len16) >> 20;
         if (len16 - near16 >= margin16) ++across;
     }
     return across;
