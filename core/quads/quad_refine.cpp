@@ -180,6 +180,18 @@ uint32_t gather(const EdgeList& edges, const Walk& w, int32_t band32, Polarity p
     return held;
 }
 
+// The walk along the line from corner a towards b (len = |ab| in q16_16, > 0) over [t0, t1].
+Walk walk_from(Point16 a, Point16 b, int64_t len, int32_t t0, int32_t t1) {
+    return {to32(a.x),
+            to32(a.y),
+            static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) * (int64_t{1} << 30)) /
+                                 len),
+            static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) * (int64_t{1} << 30)) /
+                                 len),
+            t0,
+            t1};
+}
+
 // One side: the walk between corners a and b, then around the first fit. False (line left
 // alone) when too few steps hold a point. *held and *steps: the evidence of the last walk.
 bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b,
@@ -191,14 +203,7 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     const int32_t margin32 = to32(p.end_margin),
                   len32 = static_cast<int32_t>(shr_round_half_away(len, 11));
     if (len <= 0 || len32 <= 2 * margin32 + 64) return false;
-    Walk w{to32(a.x),
-           to32(a.y),
-           static_cast<int32_t>(((static_cast<int64_t>(b.x.raw) - a.x.raw) * (int64_t{1} << 30)) /
-                                len),
-           static_cast<int32_t>(((static_cast<int64_t>(b.y.raw) - a.y.raw) * (int64_t{1} << 30)) /
-                                len),
-           margin32,
-           len32 - margin32};
+    Walk w = walk_from(a, b, len, margin32, len32 - margin32);
     const Polarity pol = polarity_of(line);
     FittedLine fit{};
     const int32_t bands[2] = {to32(p.band), to32(p.fine_band)};
@@ -290,17 +295,14 @@ uint8_t junction_corners(const EdgeList& edges, const Point16 corners[4],
         if (len <= 0) continue;
         const int32_t len32 = static_cast<int32_t>(shr_round_half_away(len, 11));
         const int32_t reach32 = len32 / 4 > 6 * 32 ? len32 / 4 : 6 * 32;
-        const int32_t ux = static_cast<int32_t>(
-            ((static_cast<int64_t>(b.x.raw) - a.x.raw) * (int64_t{1} << 30)) / len);
-        const int32_t uy = static_cast<int32_t>(
-            ((static_cast<int64_t>(b.y.raw) - a.y.raw) * (int64_t{1} << 30)) / len);
+        const Walk along = walk_from(a, b, len, 0, 0);
         // Either polarity (a checkerboard's lines run on reversed); q2_30 -> ±2^16 as in
         // polarity_of.
-        const Polarity either{direction_bin(-(uy >> 14), ux >> 14), false};
+        const Polarity either{direction_bin(-(along.uy >> 14), along.ux >> 14), false};
         const int32_t stretch[2][2] = {{-margin32 - reach32, -margin32},
                                        {len32 + margin32, len32 + margin32 + reach32}};
         for (int e = 0; e < 2; ++e) {
-            const Walk w{to32(a.x), to32(a.y), ux, uy, stretch[e][0], stretch[e][1]};
+            const Walk w{along.ox32, along.oy32, along.ux, along.uy, stretch[e][0], stretch[e][1]};
             Moments m;
             uint32_t steps = 0;
             uint8_t ends = 0;
