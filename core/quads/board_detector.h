@@ -36,7 +36,7 @@ class BoardDetector {
 public:
     static constexpr uint32_t ram_bytes() { return sizeof(BoardDetector); }
     static constexpr uint32_t quad_bytes() {
-        return sizeof(LinePair) * PairCapacity + sizeof(SinCos) * Lines::max_lines() +
+        return sizeof(LinePair) * PairCapacity + sizeof(QuadLine) * Lines::max_lines() +
                (sizeof(Quad) + sizeof(Segment)) * MaxCandidates + 4 * sizeof(Segment) * MaxQuads;
     }
     static constexpr uint16_t max_quads() { return MaxQuads; }
@@ -72,7 +72,7 @@ public:
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
         const Status q =
             detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(),
-                         params_.quads, pairs_, PairCapacity, normals_, quads_, MaxCandidates,
+                         params_.quads, pairs_, PairCapacity, geometry_, quads_, MaxCandidates,
                          &quad_count_, &quad_stats_, completed_);
         // Each candidate's sides refitted to the edge points between its corners and verified
         // by that evidence, which also becomes its score; in rank order until MaxQuads are
@@ -89,13 +89,8 @@ public:
                 side_lines[i] = quad.lines[i] == kCompletedSide ? &completed_[k]
                                                                 : &lines_.lines()[quad.lines[i]];
             Segment sides[4];
-            SideEvidence evidence;
-            refine_quad(lines_.edges(), side_lines, params_.refine, quad, sides, &evidence);
-            uint8_t completed = 0;
-            for (int i = 0; i < 4; ++i)
-                completed =
-                    static_cast<uint8_t>(completed | ((quad.lines[i] == kCompletedSide) << i));
-            if (!verify_evidence(evidence, completed, params_.refine, &quad.score)) {
+            if (!refine_verified(lines_.edges(), side_lines, params_.refine, quad, sides,
+                                 &quad.score)) {
                 ++quad_stats_.rejected_evidence;
                 continue;
             }
@@ -211,7 +206,7 @@ private:
 
     Lines lines_;
     LinePair pairs_[PairCapacity] = {};
-    SinCos normals_[Lines::max_lines()] = {};
+    QuadLine geometry_[Lines::max_lines()] = {};
     Quad quads_[MaxCandidates] = {};         // the candidates, then the kept ones first
     Segment sides_[MaxQuads][4] = {};        // each kept quadrangle's refitted sides
     Segment completed_[MaxCandidates] = {};  // detect_quads' completed sides

@@ -19,23 +19,33 @@ int64_t perimeter(const Quad& q) {
     return sum;
 }
 
-// Length of side a -> b (on line `on`, normal `nl`) covered by the lines lying along it: `on`
-// itself when it is one of them (index `on_index`), and every line with both ends within
-// collinear_distance of it; at most the side's length.
-int64_t side_support(Point16 a, Point16 b, const Segment& l, SinCos nl, const Segment* lines,
-                     uint16_t n, uint8_t on_index, int64_t side_length, const QuadParams& p) {
+// Whether both ends of segment s lie within collinear_distance of line l (normal nl).
+bool lies_along(const Segment& l, SinCos nl, const Segment& s, const QuadParams& p) {
     auto off_line = [&](q16_16 x, q16_16 y) {  // pixels, q16_16
         const int64_t d = signed_distance(l, nl, x.raw, y.raw);
         return d < 0 ? -d : d;
     };
+    return off_line(s.x1, s.y1) <= p.collinear_distance.raw &&
+           off_line(s.x2, s.y2) <= p.collinear_distance.raw;
+}
+
+// Length of side a -> b (on line `l`, normal `nl`) covered by the lines lying along it: `l`
+// itself when it is one of them (index `on_index`; geometry[on_index].collinear then names the
+// others below 32), and every line with both ends within collinear_distance of it; at most
+// the side's length.
+int64_t side_support(Point16 a, Point16 b, const Segment& l, SinCos nl, const Segment* lines,
+                     const QuadLine* geometry, uint16_t n, uint8_t on_index, int64_t side_length,
+                     const QuadParams& p) {
     int64_t covered = 0;
-    for (uint16_t j = 0; j < n; ++j) {
-        const Segment& s = lines[j];
-        if (j != on_index && (off_line(s.x1, s.y1) > p.collinear_distance.raw ||
-                              off_line(s.x2, s.y2) > p.collinear_distance.raw))
-            continue;
-        covered += side_overlap(a, b, s).raw;
+    uint16_t tested_from = 0;
+    if (on_index != kCompletedSide) {
+        for (uint32_t along = geometry[on_index].collinear; along != 0; along &= along - 1)
+            covered += side_overlap(a, b, lines[__builtin_ctz(along)]).raw;
+        tested_from = 32;
     }
+    for (uint16_t j = tested_from; j < n; ++j)
+        if (j == on_index || lies_along(l, nl, lines[j], p))
+            covered += side_overlap(a, b, lines[j]).raw;
     return covered < side_length ? covered : side_length;
 }
 
@@ -56,11 +66,12 @@ int completed_sides(const Quad& q) {
     return n;
 }
 
-// Strict "a ranks before b": score, then found sides over completed ones, then perimeter,
-// then line indices.
-bool ranks_before(const Quad& a, int64_t perim_a, const Quad& b, int64_t perim_b) {
+// Strict "a ranks before b": score, then found sides over completed ones, then perimeter
+// (b's computed only when the rest ties: each costs four square roots), then line indices.
+bool ranks_before(const Quad& a, int64_t perim_a, const Quad& b) {
     if (a.score != b.score) return a.score > b.score;
     if (completed_sides(a) != completed_sides(b)) return completed_sides(a) < completed_sides(b);
+    const int64_t perim_b = perimeter(b);
     if (perim_a != perim_b) return perim_a > perim_b;
     for (int i = 0; i < 4; ++i)
         if (a.lines[i] != b.lines[i]) return a.lines[i] < b.lines[i];
@@ -141,10 +152,11 @@ Point16 far_end(const Segment& s, const Segment& l, SinCos n, int64_t* d) {
 // insertion into out[0 .. *count) (completed sides move with their quadrangles).
 class Candidates {
 public:
-    Candidates(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-               const QuadParams& p, Quad* out, Segment* completed, uint16_t capacity,
-               uint16_t* count, QuadStats* stats)
+    Candidates(const Segment* lines, const QuadLine* geometry, uint16_t n, uint16_t width,
+               uint16_t height, const QuadParams& p, Quad* out, Segment* completed,
+               uint16_t capacity, uint16_t* count, QuadStats* stats)
         : lines_(lines),
+          geometry_(geometry),
           n_(n),
           width_(width),
           height_(height),
@@ -195,9 +207,9 @@ public:
         int64_t covered = 0, perim = 0;
         bool supported = true;
         for (int k = 0; k < 4; ++k) {
-            const int64_t o =
-                side_support(cand.corners[k], cand.corners[(k + 1) & 3], *side_lines[k],
-                             side_normals[k], lines_, n_, cand.lines[k], lengths[k].raw, p_);
+            const int64_t o = side_support(cand.corners[k], cand.corners[(k + 1) & 3],
+                                           *side_lines[k], side_normals[k], lines_, geometry_, n_,
+                                           cand.lines[k], lengths[k].raw, p_);
             if (k != completed_side &&
                 o * 65536 < static_cast<int64_t>(lengths[k].raw) * p_.min_side_coverage.raw)
                 supported = false;
@@ -222,15 +234,13 @@ private:
         uint16_t dup = 0;
         while (dup < count && !same_quad(out_[dup], cand, p_.collinear_distance)) ++dup;
         if (dup < count) {
-            if (!ranks_before(cand, perim, out_[dup], perimeter(out_[dup]))) return;
+            if (!ranks_before(cand, perim, out_[dup])) return;
             for (uint16_t k = dup; k + 1u < count; ++k) move(k + 1, k);
             --count;
         }
-        if (count == capacity_ &&
-            !ranks_before(cand, perim, out_[capacity_ - 1], perimeter(out_[capacity_ - 1])))
-            return;
+        if (count == capacity_ && !ranks_before(cand, perim, out_[capacity_ - 1])) return;
         uint16_t at = count < capacity_ ? count : static_cast<uint16_t>(capacity_ - 1);
-        while (at > 0 && ranks_before(cand, perim, out_[at - 1], perimeter(out_[at - 1]))) {
+        while (at > 0 && ranks_before(cand, perim, out_[at - 1])) {
             move(at - 1, at);
             --at;
         }
@@ -244,6 +254,7 @@ private:
     }
 
     const Segment* lines_;
+    const QuadLine* geometry_;
     uint16_t n_, width_, height_;
     const QuadParams& p_;
     Quad* out_;
@@ -279,7 +290,7 @@ bool perpendicular_to_pair(const Segment* lines, uint8_t c, LinePair p, const Qu
 
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
                     const QuadParams& params, LinePair* pairs, uint16_t pair_capacity,
-                    SinCos* normals, Quad* out, uint16_t capacity, uint16_t* count,
+                    QuadLine* geometry, Quad* out, uint16_t capacity, uint16_t* count,
                     QuadStats* stats, Segment* completed) {
     *count = 0;
     *stats = QuadStats{};
@@ -298,13 +309,20 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
     // Lines come strongest first (clustering seeds clusters by points): every pair of lines
     // 0..j is formed before any pair with line j + 1, so a full pair capacity drops the pairs
     // of the weakest lines.
-    for (uint16_t i = 0; i < n; ++i) normals[i] = sin_cos(lines[i].theta);
+    for (uint16_t i = 0; i < n; ++i) geometry[i].normal = sin_cos(lines[i].theta);
+    for (uint16_t i = 0; i < n; ++i) {
+        uint32_t along = 0;
+        for (uint16_t j = 0; j < n && j < 32; ++j)
+            if (j == i || lies_along(lines[i], geometry[i].normal, lines[j], rules))
+                along |= uint32_t{1} << j;
+        geometry[i].collinear = along;
+    }
     for (uint16_t j = 1; j < n; ++j) {
         for (uint16_t i = 0; i < j; ++i) {
             if (!rule_parallel(lines[i].theta, lines[j].theta, rules)) continue;
-            const int64_t sep = separation(lines[i], normals[i], lines[j]);
+            const int64_t sep = separation(lines[i], geometry[i].normal, lines[j]);
             if (sep < min_sep || sep > max_sep ||
-                !facing(lines[i], normals[i], lines[j], normals[j], rules))
+                !facing(lines[i], geometry[i].normal, lines[j], geometry[j].normal, rules))
                 continue;
             if (npairs == pair_capacity) {
                 ++stats->pairs_dropped;
@@ -315,10 +333,11 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
     }
     stats->parallel_pairs = npairs;
 
-    Candidates candidates(lines, n, width, height, rules, out, completed, capacity, count, stats);
+    Candidates candidates(lines, geometry, n, width, height, rules, out, completed, capacity, count,
+                          stats);
     auto side = [&](Sides& s, int k, uint8_t line) {
         s.line[k] = &lines[line];
-        s.normal[k] = normals[line];
+        s.normal[k] = geometry[line].normal;
         s.id[k] = line;
     };
     for (uint16_t i = 0; i < npairs; ++i) {
@@ -334,10 +353,14 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             // Each line of one pair has the inside's side towards the other pair's segments (a
             // side's segment lies between the corners, so its middle is inside the adjacent
             // sides' lines): cheap, and most combinations of clutter lines fail it.
-            if (!facing(lines[p.a], normals[p.a], lines[q.a], normals[q.a], rules) ||
-                !facing(lines[p.a], normals[p.a], lines[q.b], normals[q.b], rules) ||
-                !facing(lines[p.b], normals[p.b], lines[q.a], normals[q.a], rules) ||
-                !facing(lines[p.b], normals[p.b], lines[q.b], normals[q.b], rules)) {
+            if (!facing(lines[p.a], geometry[p.a].normal, lines[q.a], geometry[q.a].normal,
+                        rules) ||
+                !facing(lines[p.a], geometry[p.a].normal, lines[q.b], geometry[q.b].normal,
+                        rules) ||
+                !facing(lines[p.b], geometry[p.b].normal, lines[q.a], geometry[q.a].normal,
+                        rules) ||
+                !facing(lines[p.b], geometry[p.b].normal, lines[q.b], geometry[q.b].normal,
+                        rules)) {
                 ++stats->rejected_contrast;
                 continue;
             }
@@ -367,8 +390,8 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
                 continue;
             ++stats->completions;
             int64_t da = 0, db = 0;
-            const Point16 fa = far_end(lines[p.a], lines[c], normals[c], &da);
-            const Point16 fb = far_end(lines[p.b], lines[c], normals[c], &db);
+            const Point16 fa = far_end(lines[p.a], lines[c], geometry[c].normal, &da);
+            const Point16 fb = far_end(lines[p.b], lines[c], geometry[c].normal, &db);
             // Both legs on one side of c, long enough for rule 4, and c's bright (or dark)
             // side towards them: cheap tests before the fourth side is built.
             const int64_t min_leg = rules.min_side_length.raw;

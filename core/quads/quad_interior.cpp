@@ -1,5 +1,6 @@
 #include "quads/quad_interior.h"
 
+#include "base/floor_div.h"
 #include "base/isqrt.h"
 
 namespace qt {
@@ -38,6 +39,52 @@ struct HalfPlanes {
     }
 };
 
+// Where half-plane s of h (g > 0) cuts pixel row y, kept from row to row without a division:
+// g(16x, 16y) = A − 16·dy·x with A = dx·(16y − cy) + dy·cx − need, so with D = 16·|dy| and
+// q = ⌊(A − 1) / D⌋ the row's pixels inside are x <= q (dy > 0) or x >= −q (dy < 0), and all
+// or none of them when dy = 0 (A > 0 or not). A grows by 16·dx a row: q and its remainder
+// step by that over D (two divisions a side, not four a row).
+class RowBound {
+public:
+    RowBound() = default;
+    RowBound(const HalfPlanes& h, int s, int32_t y) {
+        dy_ = h.dy[s];
+        a_ = static_cast<int64_t>(h.dx[s]) * (16 * y - h.cy[s]) +
+             static_cast<int64_t>(h.dy[s]) * h.cx[s] - h.need[s];
+        step_a_ = 16 * static_cast<int64_t>(h.dx[s]);
+        if (dy_ == 0) return;
+        d_ = 16 * static_cast<int64_t>(dy_ < 0 ? -dy_ : dy_);
+        q_ = floor_div(a_ - 1, d_);
+        r_ = floor_mod(a_ - 1, d_);
+        step_q_ = floor_div(step_a_, d_);
+        step_r_ = floor_mod(step_a_, d_);
+    }
+    // Narrows [*lo, *hi] to this row's pixels inside the half-plane.
+    void limit(int64_t* lo, int64_t* hi) const {
+        if (dy_ > 0) {
+            *hi = q_ < *hi ? q_ : *hi;
+        } else if (dy_ < 0) {
+            *lo = -q_ > *lo ? -q_ : *lo;
+        } else if (a_ <= 0) {
+            *hi = *lo - 1;
+        }
+    }
+    void next_row() {
+        a_ += step_a_;
+        if (dy_ == 0) return;
+        q_ += step_q_;
+        r_ += step_r_;
+        if (r_ >= d_) {
+            r_ -= d_;
+            ++q_;
+        }
+    }
+
+private:
+    int32_t dy_ = 0;
+    int64_t a_ = 0, step_a_ = 0, d_ = 1, q_ = 0, r_ = 0, step_q_ = 0, step_r_ = 0;
+};
+
 }  // namespace
 
 InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4], q16_16 margin) {
@@ -61,16 +108,21 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
     // pairs, one row of cells each, its occupied cells as bits of x / 2.
     uint32_t occupied[(ep::kMaxCoordinate + 1) / 64] = {};
     const int32_t first_row = (y_lo + 15) >> 4, last_row = y_hi >> 4;
-    for (int32_t y = first_row < 0 ? 0 : first_row; y <= last_row; ++y) {
+    const int32_t y0 = first_row < 0 ? 0 : first_row;
+    RowBound bound[4];
+    for (int s = 0; s < 4; ++s) bound[s] = RowBound(h, s, y0);
+    for (int32_t y = y0; y <= last_row; ++y) {
+        // The row's pixels inside every half-plane: one interval, from the four bounds.
+        int64_t lo = (x_lo + 15) >> 4, hi = x_hi >> 4;
+        for (RowBound& b : bound) {
+            b.limit(&lo, &hi);
+            b.next_row();
+        }
         uint32_t i = 0, end = 0;
-        edges.span((x_lo + 15) >> 4, x_hi >> 4, y, &i, &end);
+        if (lo <= hi) edges.span(static_cast<int32_t>(lo), static_cast<int32_t>(hi), y, &i, &end);
         for (; i < end; ++i) {
-            const uint32_t x = ep::x(edges[static_cast<uint16_t>(i)]);
-            const int32_t px = 16 * static_cast<int32_t>(x), py = 16 * y;
-            bool inside = true;
-            for (int s = 0; s < 4 && inside; ++s) inside = h.g(s, px, py) > 0;
-            if (!inside) continue;
-            const uint32_t cell = x >> 1, bit = 1u << (cell & 31u);
+            const uint32_t cell = ep::x(edges[static_cast<uint16_t>(i)]) >> 1,
+                           bit = 1u << (cell & 31u);
             count.cells += (occupied[cell >> 5] & bit) == 0;
             occupied[cell >> 5] |= bit;
         }

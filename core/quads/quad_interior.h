@@ -33,9 +33,9 @@ struct InteriorCount {
 };
 
 // Counts the cells of `edges` strictly inside the convex quadrangle `corners` (either
-// orientation) and farther than `margin` px from each of its sides. Work: one span lookup per
-// row of the quadrangle's bounding box and four half-plane tests per point in it; 128 B of
-// stack (a row of cells, frames up to 2048 px wide).
+// orientation) and farther than `margin` px from each of its sides. Work: per row of the
+// quadrangle's bounding box, the interval of pixels inside (four bounds carried from the row
+// before) and one span lookup over it; 128 B of stack (a row of cells, frames up to 2048 px wide).
 InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4], q16_16 margin);
 
 // True when the inside is clear: at most limit_percent % of its cells hold an edge point at

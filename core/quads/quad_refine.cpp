@@ -235,26 +235,50 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     return true;
 }
 
-}  // namespace
+// Side i of a verified quadrangle: evidence on both ends and on `least` % of its steps.
+bool side_passes(const SideEvidence& e, int i, uint32_t least) {
+    return e.steps[i] > 0 && e.ends[i] == 3u && e.held[i] * 100u >= e.steps[i] * least;
+}
 
-uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
-                    const RefineParams& params, Quad& quad, Segment sides[4],
-                    SideEvidence* evidence) {
+uint32_t least_evidence(const RefineParams& params, uint8_t completed, int i) {
+    return ((static_cast<uint32_t>(completed) >> i) & 1u) != 0
+               ? params.min_hidden_side_evidence_percent
+               : params.min_side_evidence_percent;
+}
+
+// refine_quad's side walks, in side order, into fitted and found; the mask of sides refitted.
+// After each side, go_on(found, i) false ends the walks there (the sides after it are left as
+// they were given) and makes *stopped true.
+template <class GoOn>
+uint8_t refit_sides(const EdgeList& edges, const Segment* const lines[4],
+                    const RefineParams& params, const Quad& quad, Segment fitted[4],
+                    SideEvidence& found, bool* stopped, GoOn&& go_on) {
     uint8_t refitted = 0;
-    Segment fitted[4];
-    SideEvidence found{};
+    *stopped = false;
+    found = SideEvidence{};
+    for (int i = 0; i < 4; ++i) fitted[i] = *lines[i];
     for (int i = 0; i < 4; ++i) {
-        const Segment& line = *lines[i];
-        fitted[i] = line;
         uint32_t held = 0, steps = 0;
         uint8_t ends = 0;
-        if (refit_side(edges, line, quad.corners[i], quad.corners[(i + 1) & 3], params, fitted[i],
-                       &held, &steps, &ends))
+        if (refit_side(edges, *lines[i], quad.corners[i], quad.corners[(i + 1) & 3], params,
+                       fitted[i], &held, &steps, &ends))
             refitted = static_cast<uint8_t>(refitted | (1u << i));
         found.ends[i] = ends;
         found.held[i] = static_cast<uint16_t>(held > 65535u ? 65535u : held);
         found.steps[i] = static_cast<uint16_t>(steps > 65535u ? 65535u : steps);
+        if (!go_on(found, i)) {
+            *stopped = true;
+            break;
+        }
     }
+    return refitted;
+}
+
+// The rest of refine_quad once the sides are walked: corners where the refitted sides cross,
+// put in detect's order with the lines, sides and evidence.
+uint8_t place_refitted(const Segment* const lines[4], uint8_t refitted, const Segment fitted[4],
+                       const SideEvidence& found, Quad& quad, Segment sides[4],
+                       SideEvidence* evidence) {
     if (evidence) *evidence = found;
     for (int i = 0; i < 4; ++i) sides[i] = *lines[i];
     if (refitted == 0) return 0;
@@ -282,6 +306,44 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
         }
     }
     return mask;
+}
+
+// Bit i: side i of q was completed (detect_quads), not found.
+uint8_t completed_sides_of(const Quad& q) {
+    uint8_t completed = 0;
+    for (int i = 0; i < 4; ++i)
+        completed = static_cast<uint8_t>(completed | ((q.lines[i] == kCompletedSide) << i));
+    return completed;
+}
+
+}  // namespace
+
+uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
+                    const RefineParams& params, Quad& quad, Segment sides[4],
+                    SideEvidence* evidence) {
+    Segment fitted[4];
+    SideEvidence found;
+    bool stopped = false;
+    const uint8_t refitted = refit_sides(edges, lines, params, quad, fitted, found, &stopped,
+                                         [](const SideEvidence&, int) { return true; });
+    return place_refitted(lines, refitted, fitted, found, quad, sides, evidence);
+}
+
+bool refine_verified(const EdgeList& edges, const Segment* const lines[4],
+                     const RefineParams& params, Quad& quad, Segment sides[4], q16_16* score) {
+    const uint8_t completed = completed_sides_of(quad);
+    Segment fitted[4];
+    SideEvidence found;
+    bool stopped = false;
+    const uint8_t refitted = refit_sides(
+        edges, lines, params, quad, fitted, found, &stopped, [&](const SideEvidence& e, int i) {
+            return !params.verify || side_passes(e, i, least_evidence(params, completed, i));
+        });
+    if (stopped) return false;
+    SideEvidence evidence;
+    place_refitted(lines, refitted, fitted, found, quad, sides, &evidence);
+    // The sides may have turned with the corners.
+    return verify_evidence(evidence, completed_sides_of(quad), params, score);
 }
 
 uint8_t junction_corners(const EdgeList& edges, const Point16 corners[4],
@@ -325,11 +387,7 @@ bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParam
     for (int i = 0; i < 4; ++i) {
         held += e.held[i];
         steps += e.steps[i];
-        const bool hidden = ((static_cast<uint32_t>(completed) >> i) & 1u) != 0;
-        const uint32_t least =
-            hidden ? params.min_hidden_side_evidence_percent : params.min_side_evidence_percent;
-        sides_ok =
-            sides_ok && e.steps[i] > 0 && e.ends[i] == 3u && e.held[i] * 100u >= e.steps[i] * least;
+        sides_ok = sides_ok && side_passes(e, i, least_evidence(params, completed, i));
     }
     *share = q16_16::from_raw(
         steps > 0 ? static_cast<int32_t>((static_cast<int64_t>(held) << 16) / steps) : 0);

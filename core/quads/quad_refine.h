@@ -77,6 +77,14 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
                     const RefineParams& params, Quad& quad, Segment sides[4],
                     SideEvidence* evidence = nullptr);
 
+// refine_quad, then verify_evidence (completed: the sides quad.lines marks kCompletedSide), as
+// BoardDetector keeps a candidate: true when it passes, with quad and sides refined and *score
+// its share of steps with evidence. A side whose evidence already fails (params.verify) ends
+// the work there, false: the sides after it are not walked (on a busy frame most candidates
+// fail, and each side costs two walks); quad is then left as given and sides unwritten.
+bool refine_verified(const EdgeList& edges, const Segment* const lines[4],
+                     const RefineParams& params, Quad& quad, Segment sides[4], q16_16* score);
+
 // The share of the steps with evidence over the four sides, q16_16 in [0, 1]; false when a
 // side or the whole falls below the verification limits of `params` (never when
 // params.verify is false). completed: bit i when side i was completed rather than found.

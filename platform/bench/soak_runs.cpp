@@ -198,7 +198,7 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
 
     Segment lines[4];
     LinePair pairs[64];
-    SinCos normals[4];
+    QuadLine geometry[4];
     Quad quads[4];
     P truth[4];
     for (uint32_t k = 0; k < cfg.frames; ++k) {
@@ -235,7 +235,7 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
         res.full_frames += full;
         uint16_t count = 0;
         QuadStats qs;
-        detect_quads(lines, n, kW, kH, QuadParams{}, pairs, 64, normals, quads, 4, &count, &qs);
+        detect_quads(lines, n, kW, kH, QuadParams{}, pairs, 64, geometry, quads, 4, &count, &qs);
         const TrackedQuad out = tracker.step(n > 0 ? lines : nullptr, n, quads, count);
         const QuadTrackLost lost = tracker.stats().lost_reason;
         // missed_ counts restart with a track: side_unseen needs max_predicted + 1 frames of it.

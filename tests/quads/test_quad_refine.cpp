@@ -102,6 +102,9 @@ TEST_CASE("refined sides put the corners on the true corners from lines a few pi
 
     Segment sides[4];
     SideEvidence evidence{};
+    Quad verified = quad;
+    Segment verified_sides[4];
+    q16_16 verified_share;
     REQUIRE(refine_quad(g_lines.edges(), side_lines, RefineParams{}, quad, sides, &evidence) ==
             0xF);
     for (int i = 0; i < 4; ++i) {
@@ -116,6 +119,16 @@ TEST_CASE("refined sides put the corners on the true corners from lines a few pi
     q16_16 share;
     CHECK(verify_evidence(evidence, 0, RefineParams{}, &share));
     CHECK(share.raw > 58982);  // > 0.9
+    // In one call, as the detector keeps a candidate: the same corners, sides and share.
+    REQUIRE(refine_verified(g_lines.edges(), side_lines, RefineParams{}, verified, verified_sides,
+                            &verified_share));
+    CHECK(verified_share == share);
+    for (int i = 0; i < 4; ++i) {
+        CHECK(verified.corners[i].x == quad.corners[i].x);
+        CHECK(verified.corners[i].y == quad.corners[i].y);
+        CHECK(verified_sides[i].rho == sides[i].rho);
+        CHECK(verified_sides[i].theta == sides[i].theta);
+    }
 }
 
 TEST_CASE("a side without edges keeps its line and the evidence turns the quadrangle down",
@@ -125,6 +138,7 @@ TEST_CASE("a side without edges keeps its line and the evidence turns the quadra
     Segment start[4];
     const Segment* side_lines[4];
     Quad quad = exact_quad(kCorners, {155, 110}, start, side_lines);
+    Quad verified = quad;
     Segment sides[4];
     SideEvidence evidence{};
     const uint8_t refitted =
@@ -137,6 +151,13 @@ TEST_CASE("a side without edges keeps its line and the evidence turns the quadra
     CHECK_FALSE(verify_evidence(evidence, 0, RefineParams{}, &share));
     CHECK_FALSE(
         verify_evidence(evidence, 4, RefineParams{}, &share));  // not even as a completed side
+    // In one call: turned down at side 2 (side 3 is not walked).
+    CHECK_FALSE(
+        refine_verified(g_lines.edges(), side_lines, RefineParams{}, verified, sides, &share));
+    // Unless nothing is verified.
+    RefineParams keep_all;
+    keep_all.verify = false;
+    CHECK(refine_verified(g_lines.edges(), side_lines, keep_all, verified, sides, &share));
 }
 
 TEST_CASE("edge evidence rule: each side, the hidden one, both ends, the whole", "[refine]") {

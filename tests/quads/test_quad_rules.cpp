@@ -29,13 +29,13 @@ struct Found {
 Found find(const std::vector<Segment>& lines, uint16_t w, uint16_t h,
            const QuadParams& p = QuadParams{}, uint16_t pair_capacity = 64, uint16_t capacity = 4) {
     std::vector<LinePair> pairs(pair_capacity);
-    std::vector<SinCos> normals(lines.size() + 1);
+    std::vector<QuadLine> geometry(lines.size() + 1);
     std::vector<Quad> out(capacity);
     uint16_t count = 0;
     Found f;
     f.status =
         detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), w, h, p, pairs.data(),
-                     pair_capacity, normals.data(), out.data(), capacity, &count, &f.stats);
+                     pair_capacity, geometry.data(), out.data(), capacity, &count, &f.stats);
     f.quads.assign(out.begin(), out.begin() + count);
     return f;
 }
@@ -342,11 +342,11 @@ TEST_CASE("degenerate line sets give no quadrangle and no error", "[quad]") {
     const Segment s = segment(10, 10, 100, 10);
     CHECK(find({s, s, s, s}, 320, 240).quads.empty());
     std::vector<LinePair> pairs(4);
-    SinCos normals[1];
+    QuadLine geometry[1];
     Quad out[1];
     uint16_t count = 7;
     QuadStats stats;
-    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, normals, out, 1, &count,
+    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, geometry, out, 1, &count,
                        &stats) == Status::bad_size);
     CHECK(count == 0);
 }
@@ -400,4 +400,33 @@ TEST_CASE("support: a side cut in two by an occluder counts both pieces", "[quad
     std::vector<Segment> beside = one;
     beside.push_back(segment(13, 32, 13, 10));
     CHECK(find(beside, 320, 240, third).quads.empty());
+}
+
+TEST_CASE("support: a side's pieces count wherever they stand in the line list", "[quad]") {
+    // The board of the case above, its left side in two pieces, behind 36 short pieces of one
+    // 45° line (no parallel pairs among them, no line perpendicular to them: no candidate and
+    // no pair taken from the board's): the pieces and the sides at
+    // indices past 32, where detect_quads tests the lines one by one instead of reading the
+    // collinear bits it keeps for the first 32. The score is the same (319 / 350) either way.
+    QuadParams third;
+    third.min_side_coverage = q16_16::from_ratio(1, 3);
+    const auto s = sides_of(pt(10, 10), pt(110, 10), pt(110, 85), pt(10, 85));
+    const Segment low = segment(10, 85, 10, 63), high = segment(10, 32, 10, 10);
+    std::vector<Segment> filler;
+    for (int k = 0; k < 36; ++k)
+        filler.push_back(segment(160 + 4 * k, 10 + 4 * k, 162 + 4 * k, 12 + 4 * k));
+    auto with = [&](std::vector<Segment> front, std::vector<Segment> back) {
+        front.insert(front.end(), filler.begin(), filler.end());
+        front.insert(front.end(), back.begin(), back.end());
+        return front;
+    };
+    for (const auto& lines : {with({s[0], s[1], s[2], low, high}, {}),  // all before 32
+                              with({s[0], s[1], s[2], low}, {high}),    // a piece past 32
+                              with({high}, {s[0], s[1], s[2], low}),    // sides past 32
+                              with({}, {s[0], s[1], s[2], low, high})}) {
+        REQUIRE(lines.size() > 36);
+        const Found f = find(lines, 320, 240, third);
+        REQUIRE(f.quads.size() == 1);
+        CHECK(std::fabs(from_q16(f.quads[0].score) - 319.0 / 350) < 1e-4);
+    }
 }

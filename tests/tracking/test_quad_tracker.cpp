@@ -98,12 +98,12 @@ struct Harness {
     QuadTracker tracker{default_quad_tracker_params(kW, kH)};
     TrackedQuad step(const std::vector<Segment>& lines) {
         LinePair pairs[64];
-        std::vector<SinCos> normals(lines.size() + 1);
+        std::vector<QuadLine> geometry(lines.size() + 1);
         Quad quads[4];
         uint16_t count = 0;
         QuadStats stats;
         detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), kW, kH, QuadParams{}, pairs,
-                     64, normals.data(), quads, 4, &count, &stats);
+                     64, geometry.data(), quads, 4, &count, &stats);
         return tracker.step(lines.data(), static_cast<uint16_t>(lines.size()), quads, count);
     }
     // Frames 0 .. frames − 1 of the board with every side; c is left at the last frame's corners.
