@@ -40,7 +40,7 @@ struct HalfPlanes {
 };
 
 // Where half-plane s of h (g > 0) cuts pixel row y, kept from row to row without a division:
-// g(16x, 16y) = A − 16·dy·x with A = dx·(16y − cy) + dy·cx − need, so with D = 16·|dy| and
+// g(16x, 16y) = A − 16·dy·x with A = g(0, 16y), so with D = 16·|dy| and
 // q = ⌊(A − 1) / D⌋ the row's pixels inside are x <= q (dy > 0) or x >= −q (dy < 0), and all
 // or none of them when dy = 0 (A > 0 or not). A grows by 16·dx a row: q and its remainder
 // step by that over D (two divisions a side, not four a row).
@@ -49,8 +49,7 @@ public:
     RowBound() = default;
     RowBound(const HalfPlanes& h, int s, int32_t y) {
         dy_ = h.dy[s];
-        a_ = static_cast<int64_t>(h.dx[s]) * (16 * y - h.cy[s]) +
-             static_cast<int64_t>(h.dy[s]) * h.cx[s] - h.need[s];
+        a_ = h.g(s, 0, 16 * y);
         step_a_ = 16 * static_cast<int64_t>(h.dx[s]);
         if (dy_ == 0) return;
         d_ = 16 * static_cast<int64_t>(dy_ < 0 ? -dy_ : dy_);
