@@ -310,9 +310,6 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
     // 0..j is formed before any pair with line j + 1, so a full pair capacity drops the pairs
     // of the weakest lines.
     for (uint16_t i = 0; i < n; ++i) geometry[i].normal = sin_cos(lines[i].theta);
-    auto lines_face = [&](uint16_t a, uint16_t b) {
-        return facing(lines[a], geometry[a].normal, lines[b], geometry[b].normal, rules);
-    };
     for (uint16_t i = 0; i < n; ++i) {
         uint32_t along = 0;
         for (uint16_t j = 0; j < n && j < 32; ++j)
@@ -324,7 +321,9 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
         for (uint16_t i = 0; i < j; ++i) {
             if (!rule_parallel(lines[i].theta, lines[j].theta, rules)) continue;
             const int64_t sep = separation(lines[i], geometry[i].normal, lines[j]);
-            if (sep < min_sep || sep > max_sep || !lines_face(i, j)) continue;
+            if (sep < min_sep || sep > max_sep ||
+                !facing(lines[i], geometry[i].normal, lines[j], geometry[j].normal, rules))
+                continue;
             if (npairs == pair_capacity) {
                 ++stats->pairs_dropped;
                 continue;
@@ -354,8 +353,14 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             // Each line of one pair has the inside's side towards the other pair's segments (a
             // side's segment lies between the corners, so its middle is inside the adjacent
             // sides' lines): cheap, and most combinations of clutter lines fail it.
-            if (!lines_face(p.a, q.a) || !lines_face(p.a, q.b) || !lines_face(p.b, q.a) ||
-                !lines_face(p.b, q.b)) {
+            if (!facing(lines[p.a], geometry[p.a].normal, lines[q.a], geometry[q.a].normal,
+                        rules) ||
+                !facing(lines[p.a], geometry[p.a].normal, lines[q.b], geometry[q.b].normal,
+                        rules) ||
+                !facing(lines[p.b], geometry[p.b].normal, lines[q.a], geometry[q.a].normal,
+                        rules) ||
+                !facing(lines[p.b], geometry[p.b].normal, lines[q.b], geometry[q.b].normal,
+                        rules)) {
                 ++stats->rejected_contrast;
                 continue;
             }
