@@ -56,6 +56,36 @@ NccScore ncc_from_sums(const NccSums& s, uint32_t min_variance) {
     return {static_cast<int16_t>(q >= 32767 ? 32767 : q), false};
 }
 
+bool ncc_certainly_below(const NccSums& s, int32_t score_q15) {
+    const int64_t num = int64_t{s.n} * s.sab - int64_t{s.sa} * s.sb;
+    // n·Σab <= Σa·Σb: a score of 0 or below (refused and flat sums score 0 too).
+    if (num <= 0) return score_q15 > 0;
+    if (score_q15 < 5 || score_q15 > 32767 || s.n == 0 || s.n > kNccMaxPixels) return false;
+    const uint64_t va = scaled_variance(s.n, s.sa, s.saa), vb = scaled_variance(s.n, s.sb, s.sbb);
+    constexpr uint64_t kVarianceBound = uint64_t{1} << 34;
+    if (va == 0 || vb == 0 || va >= kVarianceBound || vb >= kVarianceBound) return false;
+    // 32768·num < b·sqrt(va·vb), b = score − 4, is 2^30·num² < b²·va·vb = x·vb (x = b²·va <
+    // 2^64: b² < 2^30). num < 2^34, so with sh = its bits past 31 and m = num / 2^sh, rounded
+    // up when anything is cut (m <= 2^31), num² <= m²·2^(2·sh), and it suffices that
+    // m² <= x·vb / 2^(30 + 2·sh). That quotient is taken as (x / 2^s1)·vb / 2^s2, each step
+    // rounded down (never above it), s1 the least shift that keeps the product in 64 bits:
+    // about 30 significant bits either side, so only scores within a hair of b are left to
+    // ncc_from_sums. When s2 would be negative, x·vb >= 2^(s1 + 62) puts the quotient at
+    // 2^63 or more, above m².
+    const uint64_t b = static_cast<uint64_t>(score_q15 - 4);
+    const uint64_t x = b * b * va;
+    const uint64_t mag = static_cast<uint64_t>(num);
+    const int num_bits = 64 - __builtin_clzll(mag);
+    const int sh = num_bits > 31 ? num_bits - 31 : 0;
+    const uint64_t m = sh > 0 ? (mag >> sh) + 1u : mag;
+    const int x_bits = 64 - __builtin_clzll(x), vb_bits = 64 - __builtin_clzll(vb);
+    const int s1 = x_bits + vb_bits > 64 ? x_bits + vb_bits - 64 : 0;
+    const int s2 = 30 + 2 * sh - s1;
+    if (s2 < 0) return true;
+    const uint64_t low = s2 >= 64 ? 0u : ((x >> s1) * vb) >> s2;
+    return m * m <= low;
+}
+
 NccScore ncc_q15(const uint8_t* a, uint32_t a_stride, const uint8_t* b, uint32_t b_stride,
                  uint16_t w, uint16_t h, uint32_t min_variance) {
     NccSums s;

@@ -50,12 +50,17 @@ struct BytePairs {
     uint32_t four;
     int16x2_t even, odd;
 };
-inline BytePairs byte_pairs(const uint8_t* p) {
+inline BytePairs pairs_of(uint32_t four) {
     BytePairs b;
-    memcpy(&b.four, p, 4);
-    b.even = static_cast<int16x2_t>(__uxtb16(b.four));
-    b.odd = static_cast<int16x2_t>(__uxtb16((b.four >> 8) | (b.four << 24)));
+    b.four = four;
+    b.even = static_cast<int16x2_t>(__uxtb16(four));
+    b.odd = static_cast<int16x2_t>(__uxtb16((four >> 8) | (four << 24)));
     return b;
+}
+inline BytePairs byte_pairs(const uint8_t* p) {
+    uint32_t four;
+    memcpy(&four, p, 4);
+    return pairs_of(four);
 }
 // acc + the four products of a's and b's bytes: two SMLAD.
 inline int32_t add_products(const BytePairs& a, const BytePairs& b, int32_t acc) {
@@ -76,6 +81,38 @@ inline uint32_t dot_bytes(const uint8_t* a, const uint8_t* b, uint32_t n) {
     d = static_cast<uint32_t>(acc);
 #endif
     for (; i < n; ++i) d += uint32_t{a[i]} * b[i];
+    return d;
+}
+
+// Σ a·b over a w × h block: a's rows packed (w bytes apart), b's `stride` bytes apart (below
+// 2^27, n <= kNccMaxPixels). On a Cortex-M4 each row goes four bytes a step, and a row whose
+// width is not a multiple of four (w >= 4) ends with one more step on its last four bytes, a's
+// bytes already counted masked to 0: no byte-by-byte tail, and nothing read outside the rows.
+// The same sum as dot_bytes row by row.
+inline uint32_t dot_block(const uint8_t* a, uint32_t w, uint32_t h, const uint8_t* b,
+                          uint32_t stride) {
+#if defined(__ARM_FEATURE_SIMD32)
+    if (w >= 4u) {
+        const uint32_t steps = w / 4u, rest = w % 4u;
+        // The last step's a word: its first 4 − rest bytes (counted already) cleared.
+        const uint32_t keep = rest == 0u ? 0u : ~0u << (8u * (4u - rest));
+        int32_t acc = 0;
+        for (uint32_t y = 0; y < h; ++y, a += w, b += stride) {
+            for (uint32_t k = 0; k < steps; ++k)
+                acc = detail::add_products(detail::byte_pairs(a + 4u * k),
+                                           detail::byte_pairs(b + 4u * k), acc);
+            if (rest != 0u) {
+                uint32_t last;
+                memcpy(&last, a + w - 4u, 4);
+                acc = detail::add_products(detail::pairs_of(last & keep),
+                                           detail::byte_pairs(b + w - 4u), acc);
+            }
+        }
+        return static_cast<uint32_t>(acc);
+    }
+#endif
+    uint32_t d = 0;
+    for (uint32_t y = 0; y < h; ++y, a += w, b += stride) d += dot_bytes(a, b, w);
     return d;
 }
 
@@ -124,6 +161,15 @@ bool ncc_flat(uint32_t n, uint32_t sum, uint32_t sum_sq, uint32_t min_variance);
 
 // The score from the sums: one 64-bit square root (isqrt64) and one 64-bit division.
 NccScore ncc_from_sums(const NccSums& s, uint32_t min_variance = kNccMinVariance);
+
+// True only when ncc_from_sums(s, ·).q15 < score_q15 (any min_variance): for a search that needs
+// to know whether a candidate can beat its best, without the root and the division (a few
+// 32 × 32 → 64-bit products). A score of 0 or below (ncc <= 0) is below any positive one;
+// otherwise it tests 32768·ncc < score_q15 − 4, which q15 (within 1 of round(32768·ncc)) then
+// also satisfies, in 64 bits with bounds that err towards false: false when score_q15 < 5 or
+// a block's variance term n·Σv² − (Σv)² is 0 or not below 2^34 (no real block of
+// kNccMaxPixels pixels reaches it).
+bool ncc_certainly_below(const NccSums& s, int32_t score_q15);
 
 // w×h blocks at a and b (row strides in bytes).
 NccScore ncc_q15(const uint8_t* a, uint32_t a_stride, const uint8_t* b, uint32_t b_stride,

@@ -133,15 +133,12 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
                     NccSums s = t;
                     s.sb = box_sum;
                     s.sbb = box_sq;
-                    for (uint8_t y = 0; y < th; ++y)
-                        s.sab += dot_bytes(
-                            tpl + uint32_t{y} * tw,
-                            at0 + static_cast<uint32_t>(c) + uint32_t{y} * region.stride, tw);
+                    s.sab = dot_block(tpl, tw, th, at0 + static_cast<uint32_t>(c), region.stride);
                     box_sum -= col_sum[c];
                     box_sq -= col_sq[c];
-                    // n·Σab <= Σa·Σb: a score of 0 or below (flat blocks score 0 too), which
-                    // cannot beat a positive best; the root and the division are spared.
-                    if (best > 0 && int64_t{s.n} * s.sab <= int64_t{s.sa} * s.sb)
+                    // A score certainly below the best cannot beat it (a tie could: it may
+                    // come earlier in row-major order); its root and division are spared.
+                    if (ncc_certainly_below(s, best))
                         ++hit.positions;
                     else
                         consider(ncc_from_sums(s).q15, u, v);

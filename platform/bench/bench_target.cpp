@@ -34,6 +34,8 @@ struct Variant {
     qt::RepGate rep_gate = qt::RepGate::capped;
     qt::TargetDetector detector = qt::TargetDetector::ncc_template;
     uint16_t coast_fit_frames = qt::TargetTrackerParams{}.coast_fit_frames;  // 0: the filter's
+    bool coast_projective = qt::TargetTrackerParams{}.coast_projective;
+    bool ground_corners_only = qt::TargetPipelineParams{}.ground_corners_only;
 };
 
 using qt::RepGate;
@@ -60,6 +62,12 @@ const Variant kVariants[] = {
      SearchRegionShape::square, RepGate::capped, TargetDetector::morphological},
     {"fused, paper coasting", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template, 0},
+    {"fused, straight coast", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, false},
+    {"fused, all corners", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, true, false},
     {"paper form.", TargetMethod::fused, true, 20, 1, TargetFormulation::paper},
     {"paper form., no reset", TargetMethod::fused, false, 20, 1, TargetFormulation::paper},
 };
@@ -299,6 +307,8 @@ int main(int argc, char** argv) {
             config.tracker.rep_gate = kVariants[v].rep_gate;
             config.detector = kVariants[v].detector;
             config.tracker.coast_fit_frames = kVariants[v].coast_fit_frames;
+            config.tracker.coast_projective = kVariants[v].coast_projective;
+            config.ground_corners_only = kVariants[v].ground_corners_only;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {

@@ -61,6 +61,24 @@ Option score_q15(const char* name, const char* help,
             GeometryCommand::homography};
 }
 
+// A flag naming one of two words (value: "yes|no" for the help); `field` is true for the first.
+Option either(const char* name, const char* value, const char* yes, const char* no,
+              const char* help, std::function<bool&(TargetOptions&)> field) {
+    return {name,
+            value,
+            help,
+            [field, yes, no](TargetOptions o) { return std::string(field(o) ? yes : no); },
+            [field, yes, no](const std::string& t, TargetOptions& o, std::string& e) {
+                if (t != yes && t != no) {
+                    e = "'" + t + "' is not " + yes + " or " + no;
+                    return false;
+                }
+                field(o) = t == yes;
+                return true;
+            },
+            GeometryCommand::target};
+}
+
 // A flag choosing one of an enumeration's values by name: the paper's version of a choice is
 // named "paper" (docs/fidelity.md).
 template <typename E>
@@ -147,18 +165,9 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                  return false;
              },
              GeometryCommand::target},
-            {"reset", "on|off",
-             "Table III's reset of the accumulated homography when the target is found again",
-             [](TargetOptions o) { return std::string(o.config.tracker.reset ? "on" : "off"); },
-             [](const std::string& t, TargetOptions& o, std::string& e) {
-                 if (t != "on" && t != "off") {
-                     e = "'" + t + "' is not on or off";
-                     return false;
-                 }
-                 o.config.tracker.reset = t == "on";
-                 return true;
-             },
-             GeometryCommand::target},
+            either("reset", "on|off", "on", "off",
+                   "Table III's reset of the accumulated homography when the target is found again",
+                   [](TargetOptions& o) -> bool& { return o.config.tracker.reset; }),
             bin_flag<TargetOptions, GeometryCommand>(
                 [](TargetOptions& o) -> uint8_t& { return o.bin; }, GeometryCommand::homography),
             real("q-pos", "PX2", "Kalman Q's position variance per frame, px^2, 0..10000", 0, 10000,
@@ -217,10 +226,19 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                 65535, [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
             integer<uint16_t>(
                 "coast-fit", "FRAMES",
-                "leaving the image, the estimate coasts on the least-squares line through the "
-                "measurements of this many last frames, 0..63 (0: the filter's velocity)",
+                "leaving the image, the estimate coasts on the track (--coast-track) fitted to "
+                "the measurements of this many last frames, 0..63 (0: the filter's velocity)",
                 0, TargetTracker::kMaxCoastFitFrames,
                 [](TargetOptions& o) -> uint16_t& { return o.config.tracker.coast_fit_frames; }),
+            either("coast-track", "perspective|line", "perspective", "line",
+                   "the coasting track: perspective (ours: (a + b t)/(1 + c t), a target at "
+                   "constant velocity on the ground) or line (constant velocity in the reference "
+                   "image)",
+                   [](TargetOptions& o) -> bool& { return o.config.tracker.coast_projective; }),
+            either("frame-corners", "ground|all", "ground", "all",
+                   "the frame homography's corners: ground (ours: not those whose patch reaches "
+                   "the target's box) or all (the paper)",
+                   [](TargetOptions& o) -> bool& { return o.config.ground_corners_only; }),
             integer<uint16_t>(
                 "search-radius", "PX",
                 "corner matching: candidates within this of the expected position, px, 1..128", 1,

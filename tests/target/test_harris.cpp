@@ -56,31 +56,29 @@ struct RefCorner {
     double response, fx, fy;  // fx, fy: sub-pixel position, px
 };
 
-// Harris from the definition, in double: central differences with replicated borders, M
-// summed directly over the (2V+1)² box, response 25·det − trace² (exact: every value < 2^53),
-// maxima strictly above the earlier 3×3 neighbours and >= the later ones, at least
-// max(R, V+1) px from the border, response >= floor and > 0.
+// The response at (x, y) from the definition, in double: central differences with replicated
+// borders, M summed directly over the (2V+1)² box, 25·det − trace² (exact: every value < 2^53).
+double ref_response(const Image& im, int x, int y, int V) {
+    double a = 0, b = 0, c = 0;
+    for (int v = -V; v <= V; ++v)
+        for (int u = -V; u <= V; ++u) {
+            const double X = im.get(x + u + 1, y + v) - im.get(x + u - 1, y + v);
+            const double Y = im.get(x + u, y + v + 1) - im.get(x + u, y + v - 1);
+            a += X * X;
+            b += X * Y;
+            c += Y * Y;
+        }
+    return 25 * (a * c - b * b) - (a + c) * (a + c);
+}
+
+// Harris from the definition: ref_response, maxima strictly above the earlier 3×3 neighbours
+// and >= the later ones, at least max(R, V+1) px from the border, response >= floor and > 0.
 std::vector<RefCorner> ref_harris(const Image& im, int V, int R, double floor) {
     const int w = im.w, h = im.h;
-    std::vector<double> gx(static_cast<size_t>(w * h)), gy(gx.size()), resp(gx.size(), -1e300);
+    std::vector<double> resp(static_cast<size_t>(w * h), -1e300);
     auto idx = [w](int x, int y) { return static_cast<size_t>(y * w + x); };
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            gx[idx(x, y)] = im.get(x + 1, y) - im.get(x - 1, y);
-            gy[idx(x, y)] = im.get(x, y + 1) - im.get(x, y - 1);
-        }
     for (int y = V; y < h - V; ++y)
-        for (int x = V; x < w - V; ++x) {
-            double a = 0, b = 0, c = 0;
-            for (int v = -V; v <= V; ++v)
-                for (int u = -V; u <= V; ++u) {
-                    const double X = gx[idx(x + u, y + v)], Y = gy[idx(x + u, y + v)];
-                    a += X * X;
-                    b += X * Y;
-                    c += Y * Y;
-                }
-            resp[idx(x, y)] = 25 * (a * c - b * b) - (a + c) * (a + c);
-        }
+        for (int x = V; x < w - V; ++x) resp[idx(x, y)] = ref_response(im, x, y, V);
     const int border = std::max(R, V + 1);
     std::vector<RefCorner> out;
     for (int y = border; y < h - border; ++y)
@@ -212,6 +210,31 @@ TEST_CASE("Harris with other patch and window radii equals the reference", "[har
         REQUIRE(detect(det, im, config(100000000, 1, 1, 200), out) == Status::ok);
         require_same(out, want, im);
     }
+}
+
+TEST_CASE("Harris ties: plateaus of equal responses give the corner the tie rule names",
+          "[harris]") {
+    // Dots of even width and height, each symmetric about the line between its two middle
+    // columns (and rows): the responses there come in exactly equal pairs, and the rule (above
+    // the earlier neighbours, at least the later ones) names the plateau's first pixel in
+    // raster order. Widths 2..6 at several contrasts, against the double-precision reference.
+    Image im(96, 64, 90);
+    int dot = 0;
+    for (int w : {2, 4, 6})
+        for (int h : {2, 4}) {
+            const int x0 = 10 + 28 * (dot % 3), y0 = 12 + 28 * (dot / 3);
+            fill_rect(im, x0, y0, x0 + w - 1, y0 + h - 1, 90 + 40 + 30 * dot);
+            ++dot;
+        }
+    const auto want = ref_harris(im, 2, 4, 1e7);
+    REQUIRE(want.size() >= 6);
+    int tied = 0;  // corners whose right-hand neighbour has the same response
+    for (const RefCorner& k : want) tied += ref_response(im, k.x + 1, k.y, 2) == k.response;
+    REQUIRE(tied >= 3);
+    static HarrisDetector<128, 255, 4, 2> det;
+    static FeatureSet<4, 255> out;
+    REQUIRE(detect(det, im, config(10000000, 1, 1, 255), out) == Status::ok);
+    require_same(out, want, im);
 }
 
 TEST_CASE("Harris on a bright square: its four corners, worked by hand", "[harris]") {

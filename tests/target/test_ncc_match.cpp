@@ -151,6 +151,69 @@ TEST_CASE("NCC equals the double formula within 1 in Q15", "[ncc]") {
     CHECK(worst <= 1);
 }
 
+TEST_CASE("ncc_certainly_below never calls a score below that is not, and spares most", "[ncc]") {
+    // Blocks of 1..1024 pixels, scores spread over [-1, 1]: independent, correlated at several
+    // noise levels, and low-contrast blocks (grey levels within a span of 3..12, the small
+    // variances the bound's shifts must not coarsen). For each, the bound is asked about
+    // every score from q - 3 to q + 8 (q: ncc_from_sums' own) and a random one: it may say
+    // "below" only for scores above q, and must for most scores 8 or more above a positive q.
+    Pcg32 rng(4242);
+    uint32_t asked_above = 0, spared_above = 0, said_below = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const int w = 1 + static_cast<int>(rng.below(32)),
+                  h = 1 + static_cast<int>(rng.below(static_cast<uint32_t>(1024 / w)));
+        const int kind = trial % 4;  // 0 independent, 1 correlated, 2 faint, 3 faint correlated
+        const int span = kind >= 2 ? 3 + static_cast<int>(rng.below(10)) : 256;
+        const int noise = 1 + static_cast<int>(rng.below(kind >= 2 ? 4 : 120));
+        std::vector<uint8_t> a(static_cast<size_t>(w * h)), b(a.size());
+        const int base = static_cast<int>(rng.below(static_cast<uint32_t>(257 - span)));
+        auto grey = [&] { return base + static_cast<int>(rng.below(static_cast<uint32_t>(span))); };
+        for (size_t i = 0; i < a.size(); ++i) {
+            const int v = grey();
+            const int jitter = static_cast<int>(rng.below(static_cast<uint32_t>(2 * noise + 1)));
+            a[i] = static_cast<uint8_t>(v);
+            b[i] = kind % 2 == 0 ? static_cast<uint8_t>(grey()) : clamp8(v + jitter - noise);
+        }
+        NccSums s;
+        s.n = static_cast<uint32_t>(w * h);
+        ncc_add_row<true>(a.data(), b.data(), s.n, s);
+        const int32_t q = ncc_from_sums(s).q15;
+        INFO("trial " << trial << " " << w << "x" << h << " q15 " << q);
+        for (int32_t score = q - 3; score <= q + 8; ++score) {
+            const bool below = ncc_certainly_below(s, score);
+            said_below += below;
+            REQUIRE((!below || q < score));
+            if (score >= q + 8 && q > 0 && score <= 32767) {
+                ++asked_above;
+                spared_above += below;
+            }
+        }
+        const int32_t any = static_cast<int32_t>(rng.below(32768));
+        REQUIRE((!ncc_certainly_below(s, any) || q < any));
+    }
+    CHECK(said_below > 1000);
+    CHECK(asked_above > 500);
+    CHECK(spared_above * 100 >= asked_above * 99);
+}
+
+TEST_CASE("dot_block is the sum of products over the block, whatever its width", "[ncc]") {
+    // The template search's Σab; on a Cortex-M4 its rows go four bytes a step with a masked last
+    // step (the firmware's ncc_check runs this on the target), here the plain loop.
+    Pcg32 rng(11);
+    std::vector<uint8_t> a(32 * 32), b(40 * 33);
+    for (uint32_t w = 1; w <= 32; ++w)
+        for (uint32_t h = 1; h <= 32 && w * h <= kNccMaxPixels; h += 5) {
+            for (auto& v : a) v = static_cast<uint8_t>(rng.next() >> 24);
+            for (auto& v : b) v = static_cast<uint8_t>(rng.next() >> 24);
+            a[0] = b[0] = 255;  // the largest product
+            uint64_t want = 0;
+            for (uint32_t y = 0; y < h; ++y)
+                for (uint32_t x = 0; x < w; ++x) want += uint64_t{a[y * w + x]} * b[y * 40 + x];
+            CAPTURE(w, h);
+            CHECK(dot_block(a.data(), w, h, b.data(), 40) == want);
+        }
+}
+
 TEST_CASE("NCC hand-worked blocks", "[ncc]") {
     Pcg32 rng(3);
     std::vector<uint8_t> p(81), neg(81), affine(81), doubled(81);

@@ -374,96 +374,149 @@ TEST_CASE(
     CHECK(copy.accumulated().m[2] == -2.0f);
 }
 
-// The line a leaving target coasts on, in double: least squares x = a + b·k over the samples
-// (frame k, x) of the window's frames (coast frame − window .. coast frame), evaluated at frame k.
-struct RefLine {
-    double ax = 0, bx = 0, ay = 0, by = 0;
-    RefLine(const std::vector<int>& frames, const std::vector<double>& xs,
-            const std::vector<double>& ys, int coast_frame, int window) {
-        double n = 0, sk = 0, sx = 0, sy = 0;
+// The track a leaving target coasts on, in double: x = (ax + bx·t) / (1 + c·t), y alike, t =
+// k − k̄ (frame k, k̄ the samples' mean frame: the residual below is the track's error weighted
+// by 1 + c·t, which depends on the origin of t), by least squares on ax + bx·t − c·t·x = x (and
+// y) over the samples (k, x, y) of the window's frames (coast frame − window .. coast frame),
+// solved as one 5 × 5 normal system by Gaussian elimination (the tracker eliminates a and b in
+// closed form instead, about the means of t, x and y, in float). projective false: c = 0, the
+// least-squares line.
+struct RefTrack {
+    double ax = 0, bx = 0, ay = 0, by = 0, c = 0, km = 0;
+    RefTrack(const std::vector<int>& frames, const std::vector<double>& xs,
+             const std::vector<double>& ys, int coast_frame, int window, bool projective) {
+        double count = 0;
         for (size_t i = 0; i < frames.size(); ++i)
             if (coast_frame - frames[i] <= window) {
-                n += 1;
-                sk += frames[i];
-                sx += xs[i];
-                sy += ys[i];
+                km += frames[i];
+                count += 1;
             }
-        const double km = sk / n, xm = sx / n, ym = sy / n;
-        double skk = 0, skx = 0, sky = 0;
-        for (size_t i = 0; i < frames.size(); ++i)
-            if (coast_frame - frames[i] <= window) {
-                skk += (frames[i] - km) * (frames[i] - km);
-                skx += (frames[i] - km) * (xs[i] - xm);
-                sky += (frames[i] - km) * (ys[i] - ym);
+        km /= count;
+        const int n = projective ? 5 : 4;  // unknowns ax, bx, ay, by[, c]
+        double m[5][6] = {};
+        auto add = [&](const double row[5], double rhs) {
+            for (int i = 0; i < n; ++i) {
+                for (int j = 0; j < n; ++j) m[i][j] += row[i] * row[j];
+                m[i][5] += row[i] * rhs;
             }
-        bx = skx / skk;
-        by = sky / skk;
-        ax = xm - bx * km;
-        ay = ym - by * km;
-    }
-    double x(int k) const { return ax + bx * k; }
-    double y(int k) const { return ay + by * k; }
-};
-
-TEST_CASE(
-    "TargetTracker fused: a target leaving the image coasts on the least-squares line "
-    "through its last measurements",
-    "[target]") {
-    // The camera moves the ground +2 px a frame in x; the target drives over the ground at
-    // (1.5, 0.5) px a frame, so in the image it moves (3.5, 0.5) from (120, 100). Frames 1..50
-    // measure it with a deterministic zero-mean error (±0.6 px in x alternating, −0.4/0/+0.4 in
-    // y); then nothing. Every measurement is in the image the filter lives in after its reset, so
-    // the reference line is fitted in frame coordinates with the ground motion taken out: the
-    // target's ground track in the image of frame 0 is (120 + 1.5k, 100 + 0.5k).
-    const TargetTrackerParams params;  // defaults: coast_fit_frames 32
-    auto run = [&](uint16_t window, std::vector<int>* frames, std::vector<double>* gx,
-                   std::vector<double>* gy, std::vector<TargetEstimate>* out) {
-        TargetTrackerParams p = params;
-        p.coast_fit_frames = window;
-        TargetTracker t;
-        t.init(120, 100, 320, 240, p);
-        frames->assign(1, 0);
-        gx->assign(1, 120.0);
-        gy->assign(1, 100.0);
-        for (int k = 1; k <= 110; ++k) {
-            t.predict(geometry(translation(2, 0)));
-            if (k <= 50) {
-                const double nx = (k % 2 == 0 ? 0.6 : -0.6), ny = 0.4 * (k % 3 - 1);
-                const double zx = 120 + 3.5 * k + nx, zy = 100 + 0.5 * k + ny;
-                const TargetEstimate e =
-                    t.update(seen(static_cast<float>(zx), static_cast<float>(zy)));
-                REQUIRE(e.state == TargetState::measured);
-                frames->push_back(k);
-                gx->push_back(zx - 2.0 * k);  // the ground track: camera motion taken out
-                gy->push_back(zy);
-            } else {
-                out->push_back(t.update(kNone));
+        };
+        for (size_t i = 0; i < frames.size(); ++i) {
+            if (coast_frame - frames[i] > window) continue;
+            const double k = frames[i] - km;
+            const double rx[5] = {1, k, 0, 0, -k * xs[i]}, ry[5] = {0, 0, 1, k, -k * ys[i]};
+            add(rx, xs[i]);
+            add(ry, ys[i]);
+        }
+        for (int col = 0; col < n; ++col) {
+            int pivot = col;
+            for (int r = col + 1; r < n; ++r)
+                if (std::fabs(m[r][col]) > std::fabs(m[pivot][col])) pivot = r;
+            for (int j = 0; j < 6; ++j) std::swap(m[col][j], m[pivot][j]);
+            for (int r = 0; r < n; ++r) {
+                if (r == col) continue;
+                const double f = m[r][col] / m[col][col];
+                for (int j = 0; j < 6; ++j) m[r][j] -= f * m[col][j];
             }
         }
+        ax = m[0][5] / m[0][0];
+        bx = m[1][5] / m[1][1];
+        ay = m[2][5] / m[2][2];
+        by = m[3][5] / m[3][3];
+        if (projective) c = m[4][5] / m[4][4];
+    }
+    double x(int k) const { return (ax + bx * (k - km)) / (1 + c * (k - km)); }
+    double y(int k) const { return (ay + by * (k - km)) / (1 + c * (k - km)); }
+};
+
+// The camera moves the ground +2 px a frame in x. The target starts at (120, 100) and drives
+// over the ground; its track in the image of frame 0 is track(k). Frames 1..50 measure it with
+// a deterministic zero-mean error (±0.6 px in x alternating, −0.4/0/+0.4 in y); then nothing.
+// Every measurement is in the image the filter lives in after its reset, so the reference is
+// fitted in frame-0 coordinates with the ground motion taken out (frames, gx, gy). out: the
+// estimates of frames 51..110.
+template <class Track>
+void run_leaving_target(const TargetTrackerParams& params, Track&& track, std::vector<int>& frames,
+                        std::vector<double>& gx, std::vector<double>& gy,
+                        std::vector<TargetEstimate>& out) {
+    TargetTracker t;
+    t.init(120, 100, 320, 240, params);
+    frames.assign(1, 0);
+    gx.assign(1, 120.0);
+    gy.assign(1, 100.0);
+    out.clear();
+    for (int k = 1; k <= 110; ++k) {
+        t.predict(geometry(translation(2, 0)));
+        if (k <= 50) {
+            double x = 0, y = 0;
+            track(k, x, y);
+            const double zx = x + 2.0 * k + (k % 2 == 0 ? 0.6 : -0.6), zy = y + 0.4 * (k % 3 - 1);
+            const TargetEstimate e = t.update(seen(static_cast<float>(zx), static_cast<float>(zy)));
+            REQUIRE(e.state == TargetState::measured);
+            frames.push_back(k);
+            gx.push_back(zx - 2.0 * k);  // the ground track: camera motion taken out
+            gy.push_back(zy);
+        } else {
+            out.push_back(t.update(kNone));
+        }
+    }
+}
+
+// The worst error of the estimates of frames `from`..110 (out holds frames 51..110) against the
+// track carried into each frame by the ground's motion, px.
+template <class Track>
+double worst_error(const std::vector<TargetEstimate>& out, int from, Track&& track) {
+    double worst = 0;
+    for (int k = from; k <= 110; ++k) {
+        const TargetEstimate& e = out[static_cast<size_t>(k - 51)];
+        double tx = 0, ty = 0;
+        track(k, tx, ty);
+        worst = std::max(worst, std::hypot(e.x - (tx + 2.0 * k), e.y - ty));
+    }
+    return worst;
+}
+
+// From the first frame out of view on, the estimates lie on `ref` carried into the frame by
+// the ground's motion; returns the worst error against the truth track over those frames.
+template <class Track>
+double check_coasting(const std::vector<TargetEstimate>& out, const std::vector<int>& frames,
+                      const std::vector<double>& gx, const std::vector<double>& gy,
+                      const TargetTrackerParams& params, Track&& track, double margin_px) {
+    int coast = -1;
+    for (size_t i = 0; i < out.size() && coast < 0; ++i)
+        if (out[i].state == TargetState::out_of_view) coast = static_cast<int>(i) + 51;
+    REQUIRE(coast > 51);
+    const RefTrack ref(frames, gx, gy, coast, params.coast_fit_frames, params.coast_projective);
+    for (int k = coast; k <= 110; ++k) {
+        const TargetEstimate& e = out[static_cast<size_t>(k - 51)];
+        INFO("frame " << k);
+        CHECK(e.state == TargetState::out_of_view);
+        CHECK(e.x == Approx(ref.x(k) + 2.0 * k).margin(margin_px));
+        CHECK(e.y == Approx(ref.y(k)).margin(margin_px));
+    }
+    return worst_error(out, coast, track);
+}
+
+TEST_CASE(
+    "TargetTracker fused, straight coasting: a target leaving the image coasts on the "
+    "least-squares line through its last measurements",
+    "[target]") {
+    // A straight ground track at constant speed: (120 + 1.5k, 100 + 0.5k).
+    auto track = [](int k, double& x, double& y) {
+        x = 120 + 1.5 * k;
+        y = 100 + 0.5 * k;
     };
+    TargetTrackerParams params;
+    params.coast_projective = false;
+    params.coast_fit_frames = 32;
     std::vector<int> frames;
     std::vector<double> gx, gy;
     std::vector<TargetEstimate> coasted, kalman;
-    run(params.coast_fit_frames, &frames, &gx, &gy, &coasted);
-    run(0, &frames, &gx, &gy, &kalman);
-    // The estimate leaves the image (x >= 319.5) near frame 56; from that frame on it lies on
-    // the reference line fitted there, carried into the frame by the ground's motion.
-    int coast = -1;
-    for (size_t i = 0; i < coasted.size() && coast < 0; ++i)
-        if (coasted[i].state == TargetState::out_of_view) coast = static_cast<int>(i) + 51;
-    REQUIRE(coast > 51);
-    const RefLine line(frames, gx, gy, coast, params.coast_fit_frames);
-    double worst_coasted = 0, worst_kalman = 0;
-    for (int k = coast; k <= 110; ++k) {
-        const TargetEstimate& e = coasted[static_cast<size_t>(k - 51)];
-        INFO("frame " << k);
-        CHECK(e.x == Approx(line.x(k) + 2.0 * k).margin(2e-3));
-        CHECK(e.y == Approx(line.y(k)).margin(2e-3));
-        const double tx = 120 + 3.5 * k, ty = 100 + 0.5 * k;
-        worst_coasted = std::max(worst_coasted, std::hypot(e.x - tx, e.y - ty));
-        const TargetEstimate& f = kalman[static_cast<size_t>(k - 51)];
-        worst_kalman = std::max(worst_kalman, std::hypot(f.x - tx, f.y - ty));
-    }
+    run_leaving_target(params, track, frames, gx, gy, coasted);
+    const double worst_coasted = check_coasting(coasted, frames, gx, gy, params, track, 2e-3);
+    TargetTrackerParams paper = params;
+    paper.coast_fit_frames = 0;
+    run_leaving_target(paper, track, frames, gx, gy, kalman);
+    const double worst_kalman = worst_error(kalman, 51, track);
     // The line through 32 frames of measurements against the filter's own velocity: the
     // measurement error hardly moves the line, while the filter's velocity follows the last
     // measurements' errors (Q's 1 px²/frame² lets it).
@@ -471,6 +524,37 @@ TEST_CASE(
                                               << worst_kalman << " px");
     CHECK(worst_coasted < 1.0);
     CHECK(worst_kalman > 2 * worst_coasted);
+}
+
+TEST_CASE(
+    "TargetTracker fused: a target leaving the image coasts on the perspective track fitted "
+    "to its last measurements, where a straight line falls behind",
+    "[target]") {
+    // Constant velocity on a plane seen in perspective: the ground point's depth grows
+    // linearly, 1 + 0.006k, so the image track slows down along a straight line:
+    // (120 + 2.5k, 100 + 0.8k) / (1 + 0.006k) about (0, 0), plus the camera's 2k in x. It
+    // leaves the image near frame 61.
+    auto track = [](int k, double& x, double& y) {
+        const double d = 1 + 0.006 * k;
+        x = (120 + 2.5 * k) / d;
+        y = (100 + 0.8 * k) / d;
+    };
+    const TargetTrackerParams params;  // defaults: coast_projective, coast_fit_frames 63
+    REQUIRE(params.coast_projective);
+    std::vector<int> frames;
+    std::vector<double> gx, gy;
+    std::vector<TargetEstimate> projective, straight;
+    run_leaving_target(params, track, frames, gx, gy, projective);
+    // Float against double over a fit of 51 samples, carried up to 60 frames on: 2e-3 px.
+    const double worst_projective = check_coasting(projective, frames, gx, gy, params, track, 2e-3);
+    TargetTrackerParams line = params;
+    line.coast_projective = false;
+    run_leaving_target(line, track, frames, gx, gy, straight);
+    const double worst_straight = check_coasting(straight, frames, gx, gy, line, track, 2e-3);
+    INFO("worst error out of view: perspective track " << worst_projective << " px, straight line "
+                                                       << worst_straight << " px");
+    CHECK(worst_projective < 1.0);
+    CHECK(worst_straight > 4 * worst_projective);
 }
 
 TEST_CASE("TargetTracker fused with the default parameters resets on a perfect measurement",

@@ -76,12 +76,14 @@ bool match_displacement_q8(const Feature<R>& a, const Feature<R>& b, int32_t& dx
 }
 
 // matched() is called once, between the matching (NCC and displacements) and RANSAC, for a
-// caller that times the two (the firmware's budgets).
-template <int R, uint16_t MaxFeatures, class Matched>
+// caller that times the two (the firmware's budgets). keep(feature of A) false leaves that
+// corner's match out of the pairs: the target tracker's own corners, which move with the
+// target and not with the ground the homography describes.
+template <int R, uint16_t MaxFeatures, class Keep, class Matched>
 FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
                                    const FeatureSet<R, MaxFeatures>& b,
                                    const FrameHomographyParams& config,
-                                   FrameHomographyScratch<R, MaxFeatures>& scratch,
+                                   FrameHomographyScratch<R, MaxFeatures>& scratch, Keep&& keep,
                                    Matched&& matched) {
     FrameHomography out;
     const uint16_t found =
@@ -89,6 +91,7 @@ FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
     for (uint16_t i = 0; i < found; ++i) {
         const Feature<R>& fa = a.items[scratch.matches[i].prev];
         const Feature<R>& fb = b.items[scratch.matches[i].cur];
+        if (!keep(fa)) continue;
         int32_t dx_q8, dy_q8;
         if (!match_displacement_q8(fa, fb, dx_q8, dy_q8)) continue;
         // 1/256 px to px: exact in float (positions below 2^15 px need 23 bits).
@@ -108,7 +111,8 @@ FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
                                    const FeatureSet<R, MaxFeatures>& b,
                                    const FrameHomographyParams& config,
                                    FrameHomographyScratch<R, MaxFeatures>& scratch) {
-    return homography_between(a, b, config, scratch, [] {});
+    return homography_between(
+        a, b, config, scratch, [](const Feature<R>&) { return true; }, [] {});
 }
 
 }  // namespace qt

@@ -46,6 +46,12 @@ struct TargetPipelineParams {
     // refreshes at every match, as the paper's template tracker does (its Fig. 8).
     int32_t refresh_score_q15 = 27853;
     TargetDetector detector = TargetDetector::ncc_template;
+    // The frame homography leaves out the previous frame's corners whose patch reaches the
+    // target's box (around the last estimate, grown by kTargetBoxSlackPx): the target moves on
+    // the ground, so its corners, within the inlier threshold of the ground's motion when it
+    // moves slowly, pulled every frame's homography towards its motion, and the accumulated
+    // homography drifted with it. false: every corner (the paper).
+    bool ground_corners_only = true;
     uint8_t morph_min_contrast = 12;  // morphological: a detection's top-hat, grey levels
 };
 
@@ -225,8 +231,13 @@ public:
                 gc.match.offset_x = clamp16(ex - cx);
                 gc.match.offset_y = clamp16(ey - cy);
             }
-            out.geometry =
-                homography_between(prev_, cur, gc, scratch_, [&] { mark(TargetStage::match); });
+            const bool exclude = params_.ground_corners_only && tracking_ && target_box_.valid;
+            out.geometry = homography_between(
+                prev_, cur, gc, scratch_,
+                [&](const Feature<PatchRadius>& f) {
+                    return !exclude || !target_box_.reaches(f.px, f.py, PatchRadius);
+                },
+                [&] { mark(TargetStage::match); });
             mark(TargetStage::homography);
             g.valid = out.geometry.ransac.status == HomographyStatus::ok;
             g.h = out.geometry.ransac.h;
@@ -264,6 +275,7 @@ public:
             out.estimate.state = tracker_.state();
             out.estimate.x = static_cast<float>(roi_x_) + 0.5f * static_cast<float>(roi_w_ - 1);
             out.estimate.y = static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1);
+            remember_box(out.estimate.x, out.estimate.y);
         } else if (tracking_) {
             out.window = tracker_.predict(g);
             // A template can only match a target it wholly covers: while the prediction puts
@@ -301,6 +313,7 @@ public:
             }
             mark(TargetStage::search);
             out.estimate = tracker_.update(m);
+            remember_box(out.estimate.x, out.estimate.y);
             mark(TargetStage::update);
             const bool accepted = out.estimate.state == TargetState::measured ||
                                   out.estimate.state == TargetState::reacquired;
@@ -437,6 +450,18 @@ private:
         morph_.min_area = static_cast<uint16_t>(area / 4 > 1 ? area / 4 : 1);
         morph_.max_area = static_cast<uint16_t>(area > 16383 ? 65535 : area * 4);
     }
+    // The target's box in this frame, for the next frame's homography: the template's extent
+    // (blocks of step_ px) centred on the estimate; none once the track is lost.
+    void remember_box(float x, float y) {
+        target_box_.valid = tracking_ && tracker_.state() != TargetState::lost;
+        const float half_w = 0.5f * static_cast<float>(template_.w * step_),
+                    half_h = 0.5f * static_cast<float>(template_.h * step_);
+        target_box_.x0 = x - half_w - kTargetBoxSlackPx;
+        target_box_.x1 = x + half_w + kTargetBoxSlackPx;
+        target_box_.y0 = y - half_h - kTargetBoxSlackPx;
+        target_box_.y1 = y + half_h + kTargetBoxSlackPx;
+    }
+
     // This frame's corners become the next frame's previous ones (a copy: the detector's set
     // is overwritten by the next frame, and one copy costs less RAM than a second detector set).
     void keep_features(const Features& cur) {
@@ -459,6 +484,20 @@ private:
     MorphParams morph_;
     Polarity polarity_ = Polarity::bright;
     Homography last_h_;
+    // The estimate's error and the target's motion in a frame are a few px: the box grows by
+    // this much each side, px.
+    static constexpr float kTargetBoxSlackPx = 2.0f;
+    struct TargetBox {
+        bool valid = false;
+        float x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // px, the previous frame's image
+        // Whether the patch of radius r px centred on pixel (x, y) overlaps the box.
+        bool reaches(int16_t x, int16_t y, int r) const {
+            const float fx = static_cast<float>(x), fy = static_cast<float>(y),
+                        fr = static_cast<float>(r);
+            return fx + fr >= x0 && fx - fr <= x1 && fy + fr >= y0 && fy - fr <= y1;
+        }
+    };
+    TargetBox target_box_;  // ground_corners_only: the target in the previous frame
     uint16_t width_ = 0, height_ = 0, y_ = 0;
     bool have_previous_ = false;
     bool open_ = false;  // a frame was begun and none of its rows refused

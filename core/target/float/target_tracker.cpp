@@ -73,6 +73,7 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     history_start_ = 0;
     history_count_ = 0;
     frame_ = 0;
+    coasting_ = false;
     remember(x, y);
     for (int i = 0; i < 4; ++i) {
         roi_x_[i] = x;
@@ -144,6 +145,9 @@ SearchWindow TargetTracker::predict(const FrameGeometry& g) {
         }
     }
     kf_.predict();
+    // Out of view, the estimate stays on the coasting track (the filter's constant velocity
+    // is its tangent, which a perspective track leaves).
+    if (coasting_) coast_at(frame_);
     if (params_.method == TargetMethod::homography_only) {
         position(w.x, w.y);
         return w;  // radius 0: never measured
@@ -284,6 +288,7 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     }
     if (accepted) {
         kf_.update(in);
+        coasting_ = false;
         state_ = unseen_ > 0 ? TargetState::reacquired : TargetState::measured;
         unseen_ = 0;
         remember(zx, zy);
@@ -302,7 +307,7 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         // follows it (re-initialised there when the target returns).
         if (paper && apply_homography(acc_, ref_x_, ref_y_, x, y)) kf_.set_position(x, y);
         position(x, y);
-        // Leaving the image: the estimate coasts on the line through the last measurements.
+        // Leaving the image: the estimate coasts on the track fitted to the last measurements.
         if (!in_image(x, y) && state_ != TargetState::out_of_view && !paper &&
             params_.method == TargetMethod::fused && coast_from_history())
             position(x, y);
@@ -342,7 +347,7 @@ bool TargetTracker::coast_from_history() {
     const uint32_t window = params_.coast_fit_frames < kMaxCoastFitFrames ? params_.coast_fit_frames
                                                                           : kMaxCoastFitFrames;
     if (window == 0) return false;
-    // x = a + b·(t − t̄) by least squares over the window's samples, t in frames from now (≤ 0).
+    // Means over the window's samples, t in frames from now (≤ 0).
     float n = 0, st = 0, sx = 0, sy = 0;
     for (uint16_t i = 0; i < history_count_; ++i) {
         const Sample& s = history_[(history_start_ + i) % kHistory];
@@ -354,19 +359,63 @@ bool TargetTracker::coast_from_history() {
     }
     if (n < static_cast<float>(kMinCoastSamples)) return false;
     const float tm = st / n, xm = sx / n, ym = sy / n;
-    float stt = 0, stx = 0, sty = 0;
+    // About the means (u = t − t̄, dx = x − x̄): Σu², Σu·dx, Σu²·dx (and y).
+    float suu = 0, sux = 0, suy = 0, suux = 0, suuy = 0;
     for (uint16_t i = 0; i < history_count_; ++i) {
         const Sample& s = history_[(history_start_ + i) % kHistory];
         if (frame_ - s.frame > window) continue;
-        const float t = -static_cast<float>(frame_ - s.frame) - tm;
-        stt += t * t;
-        stx += t * (s.x - xm);
-        sty += t * (s.y - ym);
+        const float u = -static_cast<float>(frame_ - s.frame) - tm;
+        const float dx = s.x - xm, dy = s.y - ym;
+        suu += u * u;
+        sux += u * dx;
+        suy += u * dy;
+        suux += u * u * dx;
+        suuy += u * u * dy;
     }
-    if (!(stt > 0)) return false;
-    const float bx = stx / stt, by = sty / stt;
-    kf_.set_position(xm - bx * tm, ym - by * tm);  // the line at t = 0: this frame
-    kf_.set_velocity(bx, by);
+    if (!(suu > 0)) return false;
+    // dx = (ax + bx·u) / (1 + c·u), the same c for both axes, by least squares on
+    // ax + bx·u − c·u·dx = dx. For a given c, ax and bx are the straight-line fit of
+    // (1 + c·u)·dx on (1, u); what is left of dx is p + c·q with p = dx − (Σu·dx/Σu²)·u and
+    // q = u·dx − Σu·dx/n − (Σu²·dx/Σu²)·u, so c = −Σp·q / Σq² over both axes.
+    float c = 0;
+    if (params_.coast_projective) {
+        float spq = 0, sqq = 0;
+        for (uint16_t i = 0; i < history_count_; ++i) {
+            const Sample& s = history_[(history_start_ + i) % kHistory];
+            if (frame_ - s.frame > window) continue;
+            const float u = -static_cast<float>(frame_ - s.frame) - tm;
+            const float dx = s.x - xm, dy = s.y - ym;
+            const float px = dx - (sux / suu) * u, py = dy - (suy / suu) * u;
+            const float qx = u * dx - sux / n - (suux / suu) * u;
+            const float qy = u * dy - suy / n - (suuy / suu) * u;
+            spq += px * qx + py * qy;
+            sqq += qx * qx + qy * qy;
+        }
+        if (sqq > 0) c = -spq / sqq;
+    }
+    coast_.frame = frame_;
+    coast_.t_mean = tm;
+    coast_.x_mean = xm;
+    coast_.y_mean = ym;
+    coast_.c = c;
+    coast_.ax = c * sux / n;
+    coast_.ay = c * suy / n;
+    coast_.bx = (sux + c * suux) / suu;
+    coast_.by = (suy + c * suuy) / suu;
+    coasting_ = true;
+    return coast_at(frame_);
+}
+
+bool TargetTracker::coast_at(uint32_t frame) {
+    const float u = static_cast<float>(frame - coast_.frame) - coast_.t_mean;
+    const float d = 1.0f + coast_.c * u;
+    // The track's depth has fallen below a quarter of its value over the fit (nearing the
+    // horizon in the reference image, or a c the samples did not pin down): no further.
+    if (!(d >= kMinCoastDepth)) return false;
+    kf_.set_position(coast_.x_mean + (coast_.ax + coast_.bx * u) / d,
+                     coast_.y_mean + (coast_.ay + coast_.by * u) / d);
+    kf_.set_velocity((coast_.bx - coast_.c * coast_.ax) / (d * d),
+                     (coast_.by - coast_.c * coast_.ay) / (d * d));
     return true;
 }
 

@@ -116,13 +116,18 @@ struct TargetTrackerParams {
         15;                  // lost after this many untrustworthy homographies in a row, unseen
     float max_scale = 4.0f;  // lost when A scales the area at the estimate beyond max_scale²
     // Coasting out of view (fused, reference formulation): when the estimate leaves the image,
-    // its position and velocity become the least-squares line through the accepted
-    // measurements of the last coast_fit_frames frames (at least 8 of them, in the reference
-    // image), frames; 0..kMaxCoastFitFrames. The filter's velocity follows the last few
-    // measurements' errors (the paper's Q lets it), and out of view they grow with every
-    // frame; the line through many measurements hardly moves with them. 0: the filter's
-    // velocity (the paper).
-    uint16_t coast_fit_frames = 32;
+    // it follows the track fitted by least squares to the accepted measurements of the last
+    // coast_fit_frames frames (at least 8 of them, in the reference image), frames;
+    // 0..kMaxCoastFitFrames. The filter's velocity follows the last few measurements' errors
+    // (the paper's Q lets it), and out of view they grow with every frame; a fit to many
+    // measurements hardly moves with them. 0: the filter's velocity (the paper).
+    uint16_t coast_fit_frames = 63;
+    // The track's shape. A target at constant velocity on the ground plane, seen in the
+    // reference image (a perspective view of that plane), moves on a straight line but not at
+    // constant speed: x(t) = (a + b·t) / (1 + c·t) per axis with one c for both (the point's
+    // depth changes linearly with t). true: that track (5 numbers); false: a straight line at
+    // constant speed (c = 0), which under perspective misses the spell's end by px.
+    bool coast_projective = true;
 };
 
 // The frame's camera motion: the homography from the previous frame's image into this one.
@@ -222,8 +227,22 @@ private:
     uint32_t frame_ = 0;  // frames predicted since init
     void remember(float x, float y);
     void carry_history(const Homography& h);
-    // Puts the filter on the coasting line; false (filter unchanged) with too few samples.
+    // Fits the coasting track and puts the filter on it; false (filter unchanged) with too few
+    // samples.
     bool coast_from_history();
+    // Puts the filter on the coasting track at frame (position and velocity); false (filter
+    // unchanged) past kMinCoastDepth.
+    bool coast_at(uint32_t frame);
+    // The coasting track in the reference image: x = x_mean + (ax + bx·u) / (1 + c·u) px (y
+    // alike), u = frames since the fit's frame − t_mean.
+    struct CoastTrack {
+        uint32_t frame = 0;  // the frame it was fitted in
+        float t_mean = 0;    // the samples' mean time, frames from `frame` (≤ 0)
+        float x_mean = 0, y_mean = 0, ax = 0, bx = 0, ay = 0, by = 0, c = 0;
+    };
+    static constexpr float kMinCoastDepth = 0.25f;  // 1 + c·u below this: the track ends
+    CoastTrack coast_;
+    bool coasting_ = false;  // out of view since the fit, no measurement accepted yet
 };
 
 }  // namespace qt
