@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # The benchmarks. Each prints its figures and writes them into its docs/ page (between the
 # page's <!-- bench NAME --> markers, with the date, commit and machine): the figures in docs/
-# are only ever written this way. Usage: bash bench.sh [NAME...]
+# are only ever written this way. Usage: bash bench.sh [--quick] [NAME...]
+#   --quick        for iterating: each bench on a fixed subset of about a tenth of its inputs
+#                  (photos-host 150 scenes per set, target-host 2 seeds, footage-host one walker,
+#                  ...; a bench with one fixed input, such as a firmware image's frames, runs
+#                  whole), printed only: docs/ is left as it is
 #   gradient-host  core gradient throughput at 640x480, median of repeats, beside OpenCV's Sobel
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
 #   lines-host     lines stage accuracy table (default and the paper's Canny front end), vote
@@ -55,14 +59,28 @@
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
 #   hdl-soak       the gradient block against its model on QT_SOAK_SEEDS (10) soak streams of
 #                  QT_SOAK_PIXELS (10^6, at most ~1.9*10^6) pixels: faults, resets, 30 % stalls
+#   long           the ctests labelled long, which the test command leaves out: in the host
+#                  preset the whole VGA frame through both HDL blocks with 30 % stalls and the
+#                  proof at 20 clocks; in the aarch64 preset the test cases tagged [slow]
+#                  (statistics over scenes and photographs, 20 s or more under qemu-aarch64)
 #   fpga           iCE40 UP5K and HX8K logic cells, block RAMs and Fmax (yosys + nextpnr)
 # With no NAME, runs them all.
 set -euo pipefail
 cd "$(dirname "$0")"
 source platform/ensure_packages.sh
 jobs=$(nproc)
+quick=0
+if [ "${1:-}" = "--quick" ]; then
+    quick=1
+    shift
+fi
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table memory track-m4 hdl-latency hdl-soak fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table memory track-m4 hdl-latency hdl-soak long fpga fuzz)
+
+# full_or_quick FULL QUICK: the size of a bench's input set, full or --quick (about a tenth).
+full_or_quick() {
+    if [ "$quick" = 1 ]; then echo "$2"; else echo "$1"; fi
+}
 
 # The host benches compare with OpenCV in the same run: its development packages are installed
 # here (never by the test command; the runtime never links it), and the configure step fails
@@ -172,22 +190,20 @@ run_bench() {
             "$b/bench_gradient" ;;
         lines-host)
             host_build bench_lines
-            "$b/bench_lines" ;;
+            "$b/bench_lines" --scenes "$(full_or_quick 1000 100)" ;;
         quads-host)
             host_build bench_quads
-            "$b/bench_quads" ;;
+            "$b/bench_quads" --scenes "$(full_or_quick 500 50)" ;;
         photos-host)
             ensure_packages opencv-doc netpbm python3-skimage
             host_build bench_photo_boards real_photos heldout_photos patterned_photos
             rm -rf bench_out/photos && mkdir -p bench_out/photos
-            "$b/bench_photo_boards" build/host/photos --scenes "${BENCH_PHOTO_SCENES:-1500}" \
-                --pictures bench_out/photos
+            local scenes=${BENCH_PHOTO_SCENES:-$(full_or_quick 1500 150)}
+            "$b/bench_photo_boards" build/host/photos --scenes "$scenes" --pictures bench_out/photos
             echo "Held out: photographs never used to choose a parameter (python3-skimage)."
-            "$b/bench_photo_boards" build/host/photos_heldout --scenes "${BENCH_PHOTO_SCENES:-1500}" \
-                --no-sequence
+            "$b/bench_photo_boards" build/host/photos_heldout --scenes "$scenes" --no-sequence
             echo "Patterned backgrounds: opencv-doc's checkerboard calibration shots."
-            "$b/bench_photo_boards" build/host/photos_patterned --scenes "${BENCH_PHOTO_SCENES:-1500}" \
-                --no-sequence ;;
+            "$b/bench_photo_boards" build/host/photos_patterned --scenes "$scenes" --no-sequence ;;
         track-host)
             host_build bench_track
             "$b/bench_track" --out bench_out/track ;;
@@ -199,18 +215,19 @@ run_bench() {
             stream_pipes ;;
         homography-host)
             host_build bench_homography
-            "$b/bench_homography" ;;
+            "$b/bench_homography" --trials "$(full_or_quick 200 20)" ;;
         target-host)
             host_build bench_target
-            "$b/bench_target" --out bench_out/target --seeds 15 ;;
+            "$b/bench_target" --out bench_out/target --seeds "$(full_or_quick 15 2)" ;;
         footage-host)
             ensure_packages opencv-doc ffmpeg
             host_build bench_footage
             footage_video build/host/footage/vtest_384x288.y4m
             rm -rf bench_out/footage && mkdir -p bench_out/footage
-            # shellcheck disable=SC2046  # one word per truth file
+            # shellcheck disable=SC2046  # one word per truth file; --quick: the first walker
             "$b/bench_footage" build/host/footage/vtest_384x288.y4m --out bench_out/footage \
-                $(ls vectors/footage/vtest_T*.txt | grep -v '\.second\.txt$' | sort -V) ;;
+                $(ls vectors/footage/vtest_T*.txt | grep -v '\.second\.txt$' | sort -V |
+                  head -n "$(full_or_quick 1000 1)") ;;
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench 2>&1 ;;
         budgets)
@@ -232,25 +249,41 @@ run_bench() {
             cmake --preset host-sanitize >/dev/null
             cmake --build --preset host-sanitize -j"$jobs" --target bench_soak >/dev/null
             # shellcheck disable=SC2086  # the flags are words
-            ./build/host-sanitize/platform/bench/bench_soak ${BENCH_SOAK_FLAGS:-} ;;
+            ./build/host-sanitize/platform/bench/bench_soak \
+                ${BENCH_SOAK_FLAGS:-$(full_or_quick "" "--frames 100000 --target-frames 10000")} ;;
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_.*_nostall$' -V | grep -E 'LATENCY|TRAILER|STALLS|PASS|Failed') ;;
         hdl-soak)
             host_build qt_vectors hdl_benches
-            for ((s = 101; s <= 100 + ${QT_SOAK_SEEDS:-10}; ++s)); do
+            local seeds=${QT_SOAK_SEEDS:-$(full_or_quick 10 1)}
+            for ((s = 101; s <= 100 + seeds; ++s)); do
                 cmake -DQT_VECTORS=build/host/hw_model/qt_vectors -DVVP="$(command -v vvp)" \
                     -DBENCH=build/host/hdl/tb_front_w640.vvp -DSEED="$s" -DPIXELS="${QT_SOAK_PIXELS:-1000000}" \
                     -DPREFIX=build/host/hdl/soak/bench -P hdl/bench/run_soak.cmake 2>&1 |
                     grep -E -A1 --no-group-separator 'mismatches=|MISMATCH|EXTRA|MISSING|FATAL|Error' || true
-            done | awk -v seeds="${QT_SOAK_SEEDS:-10}" '{ print }
+            done | awk -v seeds="$seeds" '{ print }
                 /mismatches=/ { n++; if (/mismatches=FAIL/) bad++; for (i = 2; i <= NF; i++) { split($i, kv, "="); t[kv[1]] += kv[2] } }
                 END { printf "total seeds=%d pixels=%d frames=%d resets=%d faults=%d errors=%d checked=%d cut=%d failed=%d seconds=%d\n",
                       n, t["pixels"], t["frames"], t["resets"], t["faults"], t["errors"], t["checked"], t["cut"], bad + seeds - n, t["seconds"]
                       exit (n != seeds || bad > 0) }' ;;
+        long)
+            ensure_packages g++-aarch64-linux-gnu qemu-user opencv-doc netpbm yosys
+            host_build all
+            cmake --preset aarch64-linux >/dev/null
+            cmake --build --preset aarch64-linux -j"$jobs" >/dev/null
+            (cd build/host && ctest -L long -j"$jobs" --output-on-failure)
+            (cd build/aarch64-linux && ctest -L long -j"$jobs" --output-on-failure) ;;
         fuzz)
             ensure_packages cmake make clang libclang-rt-14-dev
-            bash tests/fuzz/run_fuzzers.sh ;;
+            if [ "$quick" = 1 ]; then
+                QT_FUZZ_RUNS_IMAGE_READER=${QT_FUZZ_RUNS_IMAGE_READER:-100000} \
+                    QT_FUZZ_RUNS_CLI_ARGS=${QT_FUZZ_RUNS_CLI_ARGS:-100000} \
+                    QT_FUZZ_RUNS_PIPELINE=${QT_FUZZ_RUNS_PIPELINE:-10000} \
+                    bash tests/fuzz/run_fuzzers.sh
+            else
+                bash tests/fuzz/run_fuzzers.sh
+            fi ;;
         fpga)
             ensure_packages yosys nextpnr-ice40 fpga-icestorm
             bash hdl/synth/ice40.sh ;;
@@ -280,6 +313,6 @@ for name in "${names[@]}"; do
     out=$(mktemp)
     run_bench "$name" | tee "$out"
     doc=$(doc_of "$name")
-    [ -z "$doc" ] || python3 platform/bench/record_figures.py "$doc" "$name" "$out"
+    [ -z "$doc" ] || [ "$quick" = 1 ] || python3 platform/bench/record_figures.py "$doc" "$name" "$out"
     rm -f "$out"
 done

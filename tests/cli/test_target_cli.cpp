@@ -111,7 +111,7 @@ TEST_CASE("quadtrack homography: errors and a pair with nothing to match", "[tar
 }
 
 TEST_CASE("quadtrack target: the sequence's target tracked through the flare and out of view",
-          "[target][cli]") {
+          "[target][cli][slow]") {
     const qt::scene::GroundSequenceConfig cfg = qt::scene::short_ground_sequence();
     const qt::scene::GroundSequence seq(cfg);
     for (int k = 0; k < seq.frames(); ++k) {

@@ -98,7 +98,8 @@ TEST_CASE("scenes that once lost a side keep every side", "[accuracy]") {
     }
 }
 
-TEST_CASE("drawn 2-px lines at noise 5: both sides merge into the centre line", "[accuracy]") {
+TEST_CASE("drawn 2-px lines at noise 5: both sides merge into the centre line",
+          "[accuracy][slow]") {
     // The false positives of these scenes move by about a tenth with PPHT's visiting order alone
     // (159 to 196 on 400 scenes over the orders tried), so the bound is on 200 scenes rather
     // than on one order's luck with 50.

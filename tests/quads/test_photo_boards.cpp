@@ -167,7 +167,7 @@ TEST_CASE("a square board tilted past rule 5's tolerance is found by its converg
 }
 
 TEST_CASE("boards on real photographs: found with sub-pixel corners, false detections rare",
-          "[photo_boards]") {
+          "[photo_boards][slow]") {
     // Regression guards at the measured level (bash bench.sh photos-host gives the full
     // figures and says where the aims are not met).
     const Tally u = run_set(g_qvga, 320, 240, true, false, 7000000, 48);

@@ -23,7 +23,8 @@ uint16_t detect(const io::GreyImage& img) {
 
 }  // namespace
 
-TEST_CASE("boards under perspective: found, corners within half a pixel RMS", "[quad_scenes]") {
+TEST_CASE("boards under perspective: found, corners within half a pixel RMS",
+          "[quad_scenes][slow]") {
     const int kScenes = 40;
     int found = 0, corners = 0;
     double sum_sq = 0, worst = 0;
@@ -51,7 +52,7 @@ TEST_CASE("boards under perspective: found, corners within half a pixel RMS", "[
     CHECK(std::sqrt(sum_sq / corners) <= 0.5);
 }
 
-TEST_CASE("board-free cluttered frames give no quadrangle", "[quad_scenes]") {
+TEST_CASE("board-free cluttered frames give no quadrangle", "[quad_scenes][slow]") {
     scene::BoardBenchOptions o;
     o.board = false;
     int false_detections = 0;

@@ -112,7 +112,7 @@ BoardBenchOptions pinned(double tilt, double rotation, double scale, double aspe
 }  // namespace
 
 TEST_CASE("board bench: corners anti-clockwise as seen, inside the margin, at the drawn scale",
-          "[board_bench_scene]") {
+          "[board_bench_scene][slow]") {
     for (int occlude = 0; occlude < 2; ++occlude) {
         BoardBenchOptions o;
         o.occlude = occlude != 0;
@@ -208,7 +208,7 @@ TEST_CASE("board bench: rotation ±30° at tilt 0 turns the sides by 30° clockw
 }
 
 TEST_CASE("board bench: the tilt seen through the vanishing points is the tilt recorded",
-          "[board_bench_scene]") {
+          "[board_bench_scene][slow]") {
     for (double focal : {0.0, 200.0, 600.0}) {
         BoardBenchOptions o;
         o.focal_px = focal;
@@ -222,7 +222,7 @@ TEST_CASE("board bench: the tilt seen through the vanishing points is the tilt r
 }
 
 TEST_CASE("board bench: pose, imaging and lighting stay in range and span it",
-          "[board_bench_scene]") {
+          "[board_bench_scene][slow]") {
     BoardBenchOptions o;
     o.noise_sigma_min = 2, o.noise_sigma_max = 8;
     o.blur_sigma_min = 0.5, o.blur_sigma_max = 1.5;
@@ -263,7 +263,7 @@ TEST_CASE("board bench: pose, imaging and lighting stay in range and span it",
 }
 
 TEST_CASE("board bench: the board is brighter just inside each side than just outside",
-          "[board_bench_scene]") {
+          "[board_bench_scene][slow]") {
     BoardBenchOptions o;
     for (uint64_t seed = 1; seed <= 100; ++seed) {
         const BoardBenchScene s = make_board_bench_scene(o, seed);
@@ -278,7 +278,7 @@ TEST_CASE("board bench: the board is brighter just inside each side than just ou
 }
 
 TEST_CASE("board bench: the occluder darkens part of exactly one side and no corner",
-          "[board_bench_scene]") {
+          "[board_bench_scene][slow]") {
     BoardBenchOptions o;
     o.occlude = true;
     int occluded = 0;
@@ -308,7 +308,8 @@ TEST_CASE("board bench: the occluder darkens part of exactly one side and no cor
     CHECK(occluded >= 95);
 }
 
-TEST_CASE("board bench: board-free frames share everything but the board", "[board_bench_scene]") {
+TEST_CASE("board bench: board-free frames share everything but the board",
+          "[board_bench_scene][slow]") {
     BoardBenchOptions with, without;
     without.board = false;
     for (uint64_t seed = 1; seed <= 30; ++seed) {

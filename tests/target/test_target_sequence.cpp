@@ -96,7 +96,7 @@ TEST_CASE("target pipeline: fused tracker through a flare and a 20-frame out-of-
 }
 
 TEST_CASE("target pipeline: a target leaving the image is not taken for a look-alike inside it",
-          "[target][sequence]") {
+          "[target][sequence][slow]") {
     // Seed 11 of the bench's long sequence: the vehicle leaves through the left border next to
     // ground that matches its template at NCC 0.7 to 0.75. Searched while its box crossed the
     // border, that patch was taken (the paper's Q had widened the gate), its pixels became the
@@ -199,7 +199,7 @@ TEST_CASE("target pipeline: set_target while a frame is open starts at the next 
 TEST_CASE(
     "target pipeline: the frame homography leaves out the target's own corners, which pull it "
     "towards the target's motion",
-    "[target]") {
+    "[target][slow]") {
     // The vehicle drives over the ground (0.2 m, ~0.5 px a frame), within RANSAC's 2 px of the
     // ground's motion, so its corners are inliers. Measured per frame with the target in view:
     // the estimated homography against the truth's at the target's true position in the
