@@ -26,7 +26,7 @@ for preset in host host-sanitize cortex-m4 cortex-m4f cortex-m3 aarch64-linux; d
     ctest --preset "$preset" -j"$jobs" | tee "$log"
     # ctest prints "Test #N: NAME ....   Passed   1.23 sec"; the three slowest, seconds.
     slowest=$(sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: (.*[^ .]) \.+ *Passed +([0-9.]+) sec$/\2 \1/p' "$log" |
-        sort -rn | head -3 | awk '{ s = $1; $1 = ""; printf "%s%s %.0f s", sep, substr($0, 2, 40), s; sep = ", " }')
+        sort -rn | awk 'NR <= 3 { s = $1; $1 = ""; printf "%s%s %.0f s", sep, substr($0, 2, 40), s; sep = ", " }')
     summary+=("$(printf '%-14s build %4d s  tests %4d s  slowest: %s' "$preset" $((t1 - t0)) \
         $((SECONDS - t1)) "$slowest")")
 done
