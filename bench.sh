@@ -234,10 +234,11 @@ run_bench() {
             host_build bench_footage
             footage_video build/host/footage/vtest_384x288.y4m
             rm -rf bench_out/footage && mkdir -p bench_out/footage
-            # shellcheck disable=SC2046  # one word per truth file; --quick: the first walker
+            local truth
+            mapfile -t truth < <(ls vectors/footage/vtest_T*.txt | grep -v '\.second\.txt$' | sort -V)
+            [ "$quick" = 0 ] || truth=("${truth[0]}")  # --quick: the first walker
             "$b/bench_footage" build/host/footage/vtest_384x288.y4m --out bench_out/footage \
-                $(ls vectors/footage/vtest_T*.txt | grep -v '\.second\.txt$' | sort -V |
-                  head -n "$(full_or_quick 1000 1)") ;;
+                "${truth[@]}" ;;
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench 2>&1 ;;
         budgets)
@@ -286,14 +287,10 @@ run_bench() {
             (cd build/aarch64-linux && ctest -L long -j"$jobs" --output-on-failure) ;;
         fuzz)
             ensure_packages cmake make clang libclang-rt-14-dev
-            if [ "$quick" = 1 ]; then
-                QT_FUZZ_RUNS_IMAGE_READER=${QT_FUZZ_RUNS_IMAGE_READER:-100000} \
-                    QT_FUZZ_RUNS_CLI_ARGS=${QT_FUZZ_RUNS_CLI_ARGS:-100000} \
-                    QT_FUZZ_RUNS_PIPELINE=${QT_FUZZ_RUNS_PIPELINE:-10000} \
-                    bash tests/fuzz/run_fuzzers.sh
-            else
-                bash tests/fuzz/run_fuzzers.sh
-            fi ;;
+            QT_FUZZ_RUNS_IMAGE_READER=${QT_FUZZ_RUNS_IMAGE_READER:-$(full_or_quick 1000000 100000)} \
+                QT_FUZZ_RUNS_CLI_ARGS=${QT_FUZZ_RUNS_CLI_ARGS:-$(full_or_quick 1000000 100000)} \
+                QT_FUZZ_RUNS_PIPELINE=${QT_FUZZ_RUNS_PIPELINE:-$(full_or_quick 100000 10000)} \
+                bash tests/fuzz/run_fuzzers.sh ;;
         fpga)
             ensure_packages yosys nextpnr-ice40 fpga-icestorm
             bash hdl/synth/ice40.sh ;;

@@ -4,9 +4,9 @@
 # (soft and hard float) and M3 firmware under qemu-system-arm, and the aarch64 build of the test
 # suite under qemu-aarch64. opencv-doc and netpbm: the real photographs some tests composite
 # boards onto (converted at build time; never needed at runtime); ccache: repeated builds.
-# Tests labelled long (the full-frame HDL runs with stalls, the deep proof) are left to
-# `bash bench.sh hdl-long`. Ends with one line per preset: build and test seconds, the slowest
-# tests.
+# Tests labelled long (the full-frame HDL runs with stalls, the deep proof, the [slow] cases
+# under qemu-aarch64) are left to `bash bench.sh long`. Ends with one line per preset: build and
+# test seconds, the slowest tests.
 set -euo pipefail
 cd "$(dirname "$0")"
 source platform/ensure_packages.sh
