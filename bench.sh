@@ -26,7 +26,9 @@
 #                  false detections, time, beside OpenCV's squares.cpp recipe
 #   photos-host    boards composited onto real photographs (opencv-doc; held out: python3-skimage;
 #                  patterned: opencv-doc's checkerboard calibration shots),
-#                  QVGA and VGA, unoccluded / occluded / board-free, 1500 scenes each (a point
+#                  QVGA and VGA, unoccluded / occluded / board-free / in front of a background
+#                  as bright as the board, 1500 scenes each, detection by the weakest side's
+#                  contrast and by noise (a point
 #                  moved by up to 0.6 with PPHT's visiting order alone at 500; other sizes:
 #                  BENCH_PHOTO_SCENES=N), beside OpenCV's squares.cpp recipe, and a 150-frame
 #                  tracked sequence; pictures of the misses in bench_out/photos

@@ -77,7 +77,7 @@ void check(const PhotoBoardOptions& o) {
         o.board_level_min >= 130 && o.board_level_min <= o.board_level_max &&
         o.board_level_max <= 255 && o.shading_max >= 0 && o.shading_max < 1 && o.print_share >= 0 &&
         o.print_share <= 1 && o.darken_min > 0 && o.darken_min <= o.darken_max &&
-        o.darken_max <= 1 && o.light_gain_min > 0 && o.light_gain_min <= 1 &&
+        o.darken_max <= 1.25 && o.light_gain_min > 0 && o.light_gain_min <= 1 &&
         o.blur_sigma_max >= 0 && o.blur_sigma_max <= 10 && o.noise_sigma_min >= 0 &&
         o.noise_sigma_min <= o.noise_sigma_max && std::isfinite(o.noise_sigma_max);
     if (!ok) throw std::invalid_argument("make_photo_board_scene: option out of range");

@@ -1,8 +1,8 @@
 // A bright board composited under perspective onto a real photograph, with ground-truth corners:
 // what a camera sees when someone holds a card up in a real room. The photograph (any size, grey
 // levels) is cropped to the frame's aspect at a random place and size, resampled, exposed for the
-// board (its white, 255, becomes `darken` × the board's level: the card, lit by the projector, is
-// the brightest surface) and lit unevenly; the board (aspect 4:3, 16:9 or 1:1; grey 200–245 with
+// board (its white, 255, becomes `darken` × the board's level: below 1 the card is the brightest
+// surface, above 1 a pale wall, window or sky outshines it, clipped at 255) and lit unevenly; the board (aspect 4:3, 16:9 or 1:1; grey 200–245 with
 // mild shading and sometimes faint print) is drawn over it, optionally with a dark disc or arm over
 // part of one side; then blur and noise. Or the same frame without the board. Host only (heap,
 // double); randomness from qt::Pcg32 and arithmetic from det_math.h (FP contraction off), so an
@@ -28,7 +28,7 @@ struct PhotoBoardOptions {
     double shading_max = 0.10;  // largest level change across the board, fraction of its level
     double print_share = 0.5;   // share of boards with faint print (2–5 lines of "text")
     double darken_min = 0.5,
-           darken_max = 0.9;       // the photograph's white over the board's level, (0, 1]
+           darken_max = 0.9;       // the photograph's white over the board's level, (0, 1.25]
     double light_gain_min = 0.6;   // darkest illumination gain over the frame (brightest 1), (0, 1]
     double blur_sigma_max = 1.25;  // Gaussian blur σ in [0, max] px (a 5-px kernel spans ±2σ)
     double noise_sigma_min = 2, noise_sigma_max = 7;  // Gaussian noise, grey levels
