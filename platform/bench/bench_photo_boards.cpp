@@ -129,8 +129,9 @@ double weakest_contrast(const sc::PhotoBoardScene& s) {
             auto at = [&](double depth) {
                 const int x = static_cast<int>(std::lround(a.x + ex * t + sign * ey * depth));
                 const int y = static_cast<int>(std::lround(a.y + ey * t - sign * ex * depth));
-                return static_cast<double>(s.image.at(std::min(s.image.width - 1, std::max(0, x)),
-                                                      std::min(s.image.height - 1, std::max(0, y))));
+                return static_cast<double>(
+                    s.image.at(std::min(s.image.width - 1, std::max(0, x)),
+                               std::min(s.image.height - 1, std::max(0, y))));
             };
             steps.push_back(std::fabs(at(4) - at(-4)));
         }

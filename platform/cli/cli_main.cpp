@@ -1,5 +1,6 @@
 // quadtrack: the command-line front end (host). Results go to stdout, errors to stderr as one
-// line each, and the exit status is non-zero on any error.
+// line each; the exit status is 0 when done, 1 on bad input data or a file that cannot be read
+// or written, 2 on a bad command line.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -12,6 +13,7 @@
 #include "cli/track_command.h"
 #include "demo/demo.h"
 #include "io/error_line.h"
+#include "io/write_check.h"
 
 namespace {
 
@@ -41,7 +43,22 @@ const char* kUsage =
     "                     through frames where bars hide its top and bottom sides, with its\n"
     "                     lines, detected sides (solid green), predicted sides (dashed orange)\n"
     "                     and corners\n"
-    "  --help             this text\n";
+    "  --help             this text\n"
+    "  --version          the version\n"
+    "\n"
+    "exit status: 0 done; 1 bad input data, or a file that cannot be read or written;\n"
+    "2 bad command line (an unknown command or option, a bad value, pattern or ROI)\n";
+
+const char* kDemoUsage =
+    "usage: quadtrack demo [--out DIR]\n"
+    "run the pipeline on the built-in synthetic board scene and write its pictures under DIR\n"
+    "(default: demo_out); quadtrack --help lists them\n";
+
+// Writes `text` on stdout: 0, or 1 after an error line when it could not be written.
+int print(const char* text, const char* who) {
+    std::fputs(text, stdout);
+    return qt::io::output_written(stdout, stderr, who) ? 0 : 1;
+}
 
 }  // namespace
 
@@ -51,10 +68,9 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::string command = argv[1];
-    if (command == "--help" || command == "-h" || command == "help") {
-        std::fputs(kUsage, stdout);
-        return 0;
-    }
+    if (command == "--help" || command == "-h" || command == "help")
+        return print(kUsage, "quadtrack");
+    if (command == "--version") return print("quadtrack " QT_VERSION "\n", "quadtrack");
     if (command == "detect")
         return qt::cli::run_detect(std::vector<std::string>(argv + 2, argv + argc), stdout, stderr);
     if (command == "track")
@@ -69,6 +85,8 @@ int main(int argc, char** argv) {
         for (int i = 2; i < argc; ++i) {
             if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
                 out = argv[++i];
+            } else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+                return print(kDemoUsage, "quadtrack demo");
             } else {
                 qt::io::print_error_line(
                     stderr, "quadtrack demo: unknown option '%s' (see quadtrack --help)", argv[i]);

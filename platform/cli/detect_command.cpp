@@ -5,6 +5,7 @@
 #include "cli/detect_json.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
+#include "io/write_check.h"
 
 namespace qt::cli {
 
@@ -52,7 +53,7 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
     to_input_pixels(result, frame.width, frame.height);
     std::fprintf(out, "%s\n",
                  detect_json(result, options.display_width, options.display_height).c_str());
-    return 0;
+    return io::output_written(out, err, "quadtrack detect") ? 0 : 1;
 }
 
 }  // namespace qt::cli

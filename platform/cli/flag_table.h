@@ -9,6 +9,7 @@
 
 #include "cli/parse_number.h"
 #include "io/error_line.h"
+#include "io/write_check.h"
 
 namespace qt::cli {
 
@@ -48,9 +49,10 @@ struct FlagTable {
     }
 
     // Flags of command c as --name VALUE or --name=VALUE into `options`, every other argument
-    // into `positional` in order; --help or -h prints `usage` on `out`. Returns -1 when the
-    // command should run, 0 after the usage, 2 after one error line "quadtrack NAME: ..." on
-    // `err` (an unknown flag, a missing or bad value).
+    // into `positional` in order ("-" is standard input; after "--" every argument is
+    // positional); --help or -h prints `usage` on `out`. Returns -1 when the command should run,
+    // 0 after the usage (1 when it could not be written), 2 after one error line
+    // "quadtrack NAME: ..." on `err` (an unknown flag or -x, a missing or bad value).
     int parse(const std::vector<std::string>& args, Command c, const char* name,
               const std::string& usage, Options& options, std::vector<std::string>& positional,
               std::FILE* out, std::FILE* err) const {
@@ -59,7 +61,19 @@ struct FlagTable {
             const std::string& a = args[i];
             if (a == "--help" || a == "-h") {
                 std::fputs(usage.c_str(), out);
-                return 0;
+                const std::string who = std::string("quadtrack ") + name;
+                return qt::io::output_written(out, err, who.c_str()) ? 0 : 1;
+            }
+            if (a == "--") {
+                positional.insert(positional.end(), args.begin() + static_cast<long>(i) + 1,
+                                  args.end());
+                break;
+            }
+            if (a.size() > 1 && a[0] == '-' && a[1] != '-') {
+                qt::io::print_error_line(
+                    err, "quadtrack %s: unknown option '%s' (see quadtrack %s --help)", name,
+                    a.c_str(), name);
+                return 2;
             }
             if (a.rfind("--", 0) != 0) {
                 positional.push_back(a);

@@ -11,13 +11,16 @@ int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
     std::string error;
     if (!source.open(spec, error)) {
         qt::io::print_error_line(err, "quadtrack %s: %s", command, error.c_str());
-        return 1;
+        return source.bad_pattern() ? 2 : 1;
     }
     io::GreyImage frame;
     int width = 0, height = 0;
     for (int k = 0;; ++k) {
         const io::FrameSource::Next next = source.next(frame, error);
         if (next == io::FrameSource::Next::end) {
+            if (!source.gap().empty())
+                qt::io::print_error_line(err, "quadtrack %s: warning: %s", command,
+                                         source.gap().c_str());
             if (k > 0) return 0;
             qt::io::print_error_line(err, "quadtrack %s: %s: no frames", command,
                                      io::input_name(spec).c_str());

@@ -8,6 +8,7 @@
 #include "io/error_line.h"
 #include "io/image_io.h"
 #include "io/push_frame.h"
+#include "io/write_check.h"
 
 namespace qt::cli {
 
@@ -91,7 +92,7 @@ int run_homography(const std::vector<std::string>& args, std::FILE* out, std::FI
     }
     const FrameHomography g = homography_between(*a, *b, options.config.geometry, *scratch);
     std::fprintf(out, "%s\n", homography_json(g, a->count, b->count, bin_a, bin_b).c_str());
-    return 0;
+    return io::output_written(out, err, "quadtrack homography") ? 0 : 1;
 }
 
 }  // namespace qt::cli

@@ -9,6 +9,7 @@
 #include "io/error_line.h"
 #include "io/image_io.h"
 #include "io/push_frame.h"
+#include "io/write_check.h"
 
 namespace qt::cli {
 
@@ -81,7 +82,7 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
                 err, "quadtrack target: --roi %d,%d,%d,%d is not wholly inside the %d x %d frame 0",
                 options.roi_x, options.roi_y, options.roi_w, options.roi_h, frame.width,
                 frame.height);
-            return 1;
+            return 2;  // a command-line mistake, as every other --roi problem
         }
         if (s != Status::ok && s != Status::capacity_exceeded) {
             qt::io::print_error_line(err, "quadtrack target: %s: frame %d: %s", name.c_str(), k,
@@ -89,8 +90,7 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
             return 1;
         }
         std::fprintf(out, "%s\n", target_json(k, result, bin).c_str());
-        std::fflush(out);
-        return 0;
+        return io::output_written(out, err, "quadtrack target") ? 0 : 1;
     });
 }
 

@@ -5,6 +5,7 @@
 #include "cli/frame_loop.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
+#include "io/write_check.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -82,8 +83,7 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         // Written and flushed before the next frame is read: a live pipe gets each frame's
         // line as soon as the frame is in.
         std::fprintf(out, "%s\n", line.c_str());
-        std::fflush(out);
-        return 0;
+        return io::output_written(out, err, "quadtrack track") ? 0 : 1;
     });
 }
 

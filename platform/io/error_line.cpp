@@ -6,11 +6,22 @@
 namespace qt::io {
 
 std::string one_line(std::string s) {
-    for (char& c : s) {
+    static const char kHex[] = "0123456789abcdef";
+    std::string out;
+    out.reserve(s.size());
+    for (char c : s) {
         const unsigned char u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7F) c = '?';
+        if (u < 0x20 || u == 0x7F) {
+            out.push_back('?');
+        } else if (u >= 0x80) {
+            out += "\\x";
+            out.push_back(kHex[u >> 4]);
+            out.push_back(kHex[u & 15u]);
+        } else {
+            out.push_back(c);
+        }
     }
-    return s;
+    return out;
 }
 
 void print_error_line(std::FILE* err, const char* format, ...) {

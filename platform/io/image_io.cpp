@@ -96,33 +96,60 @@ void parse_number(Token& t, const std::string& full) {
     t.text = full.size() > 24 ? full.substr(0, 24) + "..." : full;
 }
 
+// The bytes of a PGM/PPM header (after the magic, up to the raster) that the reader takes, at
+// most kMaxPnmHeader: a header is a few numbers, so a stream of comment, blank or digit bytes
+// with no end is refused instead of read for ever.
+class HeaderBytes {
+public:
+    explicit HeaderBytes(std::FILE* f) : f_(f) {}
+    // The next byte, or EOF at the end of the file and once the limit is reached (over()).
+    int get() {
+        if (left_ == 0) {
+            over_ = true;
+            return EOF;
+        }
+        --left_;
+        return std::getc(f_);
+    }
+    void unget(int c) {
+        std::ungetc(c, f_);
+        ++left_;
+    }
+    bool over() const { return over_; }
+
+private:
+    std::FILE* f_;
+    size_t left_ = kMaxPnmHeader;
+    bool over_ = false;
+};
+
 // Skips whitespace and '#' comments (to the end of their line). Returns the next byte, left
 // unread, or EOF.
-int skip_space(std::FILE* f) {
+int skip_space(HeaderBytes& h) {
     for (;;) {
-        int c = std::getc(f);
+        int c = h.get();
         if (c == '#') {
-            do c = std::getc(f);
+            do c = h.get();
             while (c != EOF && c != '\n');
             if (c == EOF) return EOF;
             continue;
         }
         if (c == EOF) return EOF;
         if (!is_space(c)) {
-            std::ungetc(c, f);
+            h.unget(c);
             return c;
         }
     }
 }
 
 // Reads the bytes up to whitespace, '#' or EOF (the terminator is left unread).
-Token read_token(std::FILE* f) {
+Token read_token(HeaderBytes& h) {
     std::string full;
     for (;;) {
-        const int c = std::getc(f);
+        const int c = h.get();
         if (c == EOF) break;
         if (is_space(c) || c == '#') {
-            std::ungetc(c, f);
+            h.unget(c);
             break;
         }
         if (full.size() < 64) full.push_back(static_cast<char>(c));  // longer tokens are bad anyway
@@ -138,11 +165,16 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
     const std::string kind = ppm ? "PPM" : "PGM";
     const std::string truncated = "truncated " + kind + " header: file ends ";
     const std::string malformed = "malformed " + kind + " header: ";
+    const std::string too_long =
+        kind + " header longer than " + std::to_string(kMaxPnmHeader) + " bytes";
     const char* names[2] = {"width", "height"};
+    HeaderBytes h(f);
     Token size[2];
     for (int i = 0; i < 2; ++i) {
-        if (skip_space(f) == EOF) return fail(error, path, truncated + "before the " + names[i]);
-        size[i] = read_token(f);
+        if (skip_space(h) == EOF)
+            return fail(error, path, h.over() ? too_long : truncated + "before the " + names[i]);
+        size[i] = read_token(h);
+        if (h.over()) return fail(error, path, too_long);
         if (!size[i].numeric || size[i].value == 0)
             return fail(error, path,
                         malformed + names[i] + " '" + size[i].text + "' is not a positive integer");
@@ -155,8 +187,10 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
     const int width = static_cast<int>(size[0].value);
     const int height = static_cast<int>(size[1].value);
 
-    if (skip_space(f) == EOF) return fail(error, path, truncated + "before the maxval");
-    const Token mt = read_token(f);
+    if (skip_space(h) == EOF)
+        return fail(error, path, h.over() ? too_long : truncated + "before the maxval");
+    const Token mt = read_token(h);
+    if (h.over()) return fail(error, path, too_long);
     if (!mt.numeric || mt.value == 0 || mt.value > 65535)
         return fail(error, path, malformed + "maxval '" + mt.text + "' is not in 1..65535");
     if (mt.value > 255)
@@ -165,11 +199,12 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
     const unsigned maxval = static_cast<unsigned>(mt.value);
     // Exactly one whitespace byte before the raster. A comment straight after the maxval ends
     // with its newline, which is that byte (as libnetpbm reads it).
-    int c = std::getc(f);
+    int c = h.get();
     if (c == '#') {
-        do c = std::getc(f);
+        do c = h.get();
         while (c != EOF && c != '\n');
     }
+    if (h.over()) return fail(error, path, too_long);
     if (c == EOF) return fail(error, path, truncated + "after the maxval");
 
     uint8_t scale[256];
@@ -181,17 +216,19 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
     const uint64_t expected = static_cast<uint64_t>(row_bytes) * static_cast<uint64_t>(height);
     GreyImage img;
     std::vector<uint8_t> row;
-    try {
-        img.pixels.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
-        row.resize(row_bytes);
-    } catch (const std::bad_alloc&) {
-        return fail(error, path,
-                    "out of memory for a " + size[0].text + " x " + size[1].text + " image");
-    }
     img.width = width;
     img.height = height;
     uint64_t got = 0;
     for (int y = 0; y < height; ++y) {
+        // Storage grows with the rows that arrive (the vector at most doubles), so a short file
+        // declaring a huge image is refused as truncated without taking the whole image's memory.
+        try {
+            row.resize(row_bytes);
+            img.pixels.resize(static_cast<size_t>(y + 1) * static_cast<size_t>(width));
+        } catch (const std::bad_alloc&) {
+            return fail(error, path,
+                        "out of memory for a " + size[0].text + " x " + size[1].text + " image");
+        }
         const size_t n = std::fread(row.data(), 1, row_bytes, f);
         got += n;
         if (n < row_bytes) {
@@ -357,18 +394,27 @@ FrameResult read_y4m_frame(std::FILE* f, const std::string& path, const Y4mInfo&
     const uint64_t y_bytes = static_cast<uint64_t>(info.width) * static_cast<uint64_t>(info.height);
     const uint64_t expected = y_bytes + info.chroma_bytes;
     GreyImage img;
+    img.width = info.width;
+    img.height = info.height;
+    // The luma plane is read a row at a time into storage that grows as the rows arrive (the
+    // vector at most doubles): a truncated frame of a huge declared size costs what it holds.
+    uint64_t got = 0;
     try {
-        img.pixels.resize(static_cast<size_t>(y_bytes));
         if (scratch.size() < 65536) scratch.resize(65536);
+        const size_t row = static_cast<size_t>(info.width);
+        for (size_t filled = 0; filled < y_bytes;) {
+            img.pixels.resize(filled + row);
+            const size_t r = std::fread(img.pixels.data() + filled, 1, row, f);
+            got += r;
+            filled += r;
+            if (r < row) break;
+        }
     } catch (const std::bad_alloc&) {
         fail(error, path,
              frame + "out of memory for a " + std::to_string(info.width) + " x " +
                  std::to_string(info.height) + " frame");
         return FrameResult::error;
     }
-    img.width = info.width;
-    img.height = info.height;
-    uint64_t got = std::fread(img.pixels.data(), 1, static_cast<size_t>(y_bytes), f);
     if (got == y_bytes) {
         for (uint64_t left = info.chroma_bytes; left > 0;) {
             const size_t want = left < scratch.size() ? static_cast<size_t>(left) : scratch.size();
@@ -598,9 +644,12 @@ bool FrameSource::open(const std::string& spec, std::string& error) {
         frames_read_ = 0;
         finished_ = false;
         failed_ = false;
+        bad_pattern_ = false;
         sticky_error_.clear();
+        gap_.clear();
         if (spec.find('%') != std::string::npos) {
-            if (!parse_pattern(spec, prefix_, pad_width_, suffix_))
+            bad_pattern_ = !parse_pattern(spec, prefix_, pad_width_, suffix_);
+            if (bad_pattern_)
                 return fail(
                     error, spec,
                     "bad frame pattern (use one %d or %0Nd with N 1..9, and %% for a literal %)");
@@ -679,6 +728,14 @@ FrameSource::Next FrameSource::next(GreyImage& out, std::string& error) {
                 const std::string name = pattern_name(prefix_, pad_width_, next_number_, suffix_);
                 if (!file_present(name)) {
                     finished_ = true;
+                    // A numbered file a little further on: the sequence stopped at a gap.
+                    for (int k = 1; k <= kGapLookahead && gap_.empty(); ++k) {
+                        const std::string later =
+                            pattern_name(prefix_, pad_width_, next_number_ + k, suffix_);
+                        if (file_present(later))
+                            gap_ = one_line(name + " is missing but " + later +
+                                            " exists: the sequence ends at the gap");
+                    }
                     return Next::end;
                 }
                 ok = read_image(name, out, error);

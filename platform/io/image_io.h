@@ -21,6 +21,9 @@ namespace qt::io {
 // Largest width or height accepted from a file; a larger header is refused before anything
 // is allocated ("image too large").
 constexpr int kMaxImageSide = 16384;
+// Longest PGM/PPM header (from after the magic to the raster: numbers, blanks, comments), bytes;
+// a longer one is refused, as is a Y4M header or FRAME line of 64 KiB or more.
+constexpr size_t kMaxPnmHeader = 65536;
 
 // The path that stands for standard input wherever an image or a sequence is read: "-".
 constexpr const char* kStandardInput = "-";
@@ -64,7 +67,8 @@ bool write_y4m_frame(std::FILE* f, const std::string& name, const GreyImage& img
 // A sequence of grey frames, read one at a time. The spec given to open() is one of:
 //  - a printf-style pattern of PGM/PPM files (any spec containing '%'), with exactly one
 //    "%d" or "%0Nd" (N = 1..9) and "%%" for a literal '%', e.g. "frames/f%03d.pgm": numbered
-//    from 0, or from 1 if file 0 does not exist, and ending at the first missing number;
+//    from 0, or from 1 if file 0 does not exist, and ending at the first missing number (gap()
+//    says when files follow it);
 //  - a .y4m file (recognised by its magic): every frame's Y plane, in order;
 //  - any other single image file read_image accepts: one frame;
 //  - "-", standard input: a Y4M stream (every frame, as a file), or PGM/PPM images one after
@@ -88,6 +92,13 @@ public:
 
     // Frames delivered by next() since open().
     int frames_read() const { return frames_read_; }
+    // The last open() refused the spec as a malformed pattern (a command-line mistake, not an
+    // input one).
+    bool bad_pattern() const { return bad_pattern_; }
+    // After a pattern's Next::end: one line naming the missing file when a file numbered up to
+    // kGapLookahead past it exists (the sequence stopped at a gap), else empty.
+    const std::string& gap() const { return gap_; }
+    static constexpr int kGapLookahead = 16;
 
 private:
     struct FileCloser {  // standard input is left open
@@ -116,6 +127,8 @@ private:
     bool finished_ = false;  // end reached
     bool failed_ = false;    // next() failed; it repeats sticky_error_
     std::string sticky_error_;
+    bool bad_pattern_ = false;
+    std::string gap_;  // see gap()
 };
 
 }  // namespace qt::io

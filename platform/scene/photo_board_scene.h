@@ -2,11 +2,12 @@
 // what a camera sees when someone holds a card up in a real room. The photograph (any size, grey
 // levels) is cropped to the frame's aspect at a random place and size, resampled, exposed for the
 // board (its white, 255, becomes `darken` × the board's level: below 1 the card is the brightest
-// surface, above 1 a pale wall, window or sky outshines it, clipped at 255) and lit unevenly; the board (aspect 4:3, 16:9 or 1:1; grey 200–245 with
-// mild shading and sometimes faint print) is drawn over it, optionally with a dark disc or arm over
-// part of one side; then blur and noise. Or the same frame without the board. Host only (heap,
-// double); randomness from qt::Pcg32 and arithmetic from det_math.h (FP contraction off), so an
-// (options, photograph, seed) triple gives the same bytes on every platform.
+// surface, above 1 a pale wall, window or sky outshines it, clipped at 255) and lit unevenly; the
+// board (aspect 4:3, 16:9 or 1:1; grey 200–245 with mild shading and sometimes faint print) is
+// drawn over it, optionally with a dark disc or arm over part of one side; then blur and noise. Or
+// the same frame without the board. Host only (heap, double); randomness from qt::Pcg32 and
+// arithmetic from det_math.h (FP contraction off), so an (options, photograph, seed) triple gives
+// the same bytes on every platform.
 #pragma once
 #include <stdint.h>
 

@@ -168,7 +168,7 @@ TEST_CASE("quadtrack target: command-line and input errors", "[target][cli]") {
                 "'some' is not ground or all");
     CHECK(target({f, "--roi", "1,2,30,20", "--coast-track", "line", "--frame-corners", "all"})
               .status == 0);
-    check_error(target({f, "--roi", "60,2,10,10"}), 1, "is not wholly inside the 64 x 48 frame 0");
+    check_error(target({f, "--roi", "60,2,10,10"}), 2, "is not wholly inside the 64 x 48 frame 0");
     // The second frame has another size: the first line is written, then one error line.
     const auto r = target({temp().path("e%03d.pgm"), "--roi", "10,10,9,9"});
     CHECK(r.status == 1);

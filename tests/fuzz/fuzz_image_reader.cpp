@@ -52,13 +52,13 @@ void write_file(const std::string& path, const uint8_t* data, size_t size) {
     }
 }
 
-// "<path>: what", one line: no control characters.
+// "<path>: what", one line of printable ASCII.
 bool one_line_about(const std::string& error, const std::string& path) {
     const std::string head = path + ": ";
     if (error.size() <= head.size() || error.compare(0, head.size(), head) != 0) return false;
     for (char c : error) {
         const unsigned char u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7F) return false;
+        if (u < 0x20 || u >= 0x7F) return false;
     }
     return true;
 }
