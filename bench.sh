@@ -32,6 +32,8 @@
 #                  moved by up to 0.6 with PPHT's visiting order alone at 500; other sizes:
 #                  BENCH_PHOTO_SCENES=N), beside OpenCV's squares.cpp recipe, and a 150-frame
 #                  tracked sequence; pictures of the misses in bench_out/photos
+#   pictures       the README's --draw pictures (docs/pictures): a detection on a photograph
+#                  and a tracked frame of the board sequence
 #   homography-host  RANSAC homography on generated inter-frame pairs (200 pairs, 0-50 % outliers):
 #                  corner error, inliers, iterations, time, beside OpenCV's findHomography
 #                  (RANSAC, RHO)
@@ -77,7 +79,7 @@ if [ "${1:-}" = "--quick" ]; then
     shift
 fi
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table memory track-m4 hdl-latency hdl-soak long fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host pictures track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table memory track-m4 hdl-latency hdl-soak long fpga fuzz)
 
 # full_or_quick FULL QUICK: the size of a bench's input set, full or --quick (about a tenth).
 full_or_quick() {
@@ -216,6 +218,23 @@ run_bench() {
             if [ "$quick" = 0 ]; then photo_sets >"$others"; fi
             cat "$others"
             rm -f "$others" ;;
+        pictures)
+            # The README's two --draw pictures: a board on one of opencv-doc's photographs
+            # (scene 1 of the photo bench's occluded set, QVGA), and frame 6 of the demo's board
+            # sequence at 320 x 240, tracked, its hidden sides predicted.
+            ensure_packages opencv-doc netpbm optipng
+            host_build quadtrack qt_board_y4m bench_photo_boards real_photos
+            local tmp q=build/host/platform/cli/quadtrack y=build/host/platform/scene/qt_board_y4m
+            tmp=$(mktemp -d)
+            "$b/bench_photo_boards" build/host/photos --scenes 2 --size qvga --no-sequence \
+                --pictures "$tmp" >/dev/null
+            mkdir -p docs/pictures
+            "$q" detect "$tmp/QVGA_o2000001.pgm" --draw docs/pictures/detect_photo.png >/dev/null
+            "$y" --size 320x240 | "$q" track - --draw "$tmp/track_%02d.png" >/dev/null
+            cp "$tmp/track_06.png" docs/pictures/track_frame.png
+            optipng -quiet -o2 docs/pictures/detect_photo.png docs/pictures/track_frame.png
+            ls -l docs/pictures
+            rm -rf "$tmp" ;;
         track-host)
             host_build bench_track
             "$b/bench_track" --out bench_out/track ;;

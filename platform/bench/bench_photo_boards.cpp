@@ -515,7 +515,7 @@ int main(int argc, char** argv) {
                             pictures + "/" + sz.name + "_" + set.name[0] + std::to_string(seed);
                         save_picture(stem + ".png", s, found, c);
                         std::string error;
-                        if (*failure) qt::io::write_pgm(stem + ".pgm", s.image, error);
+                        qt::io::write_pgm(stem + ".pgm", s.image, error);
                     }
                 }
                 print_row(m.name, sz.name, set.name, t, set.board);

@@ -9,6 +9,7 @@
 #include "cli/flag_table.h"
 #include "cli/parse_number.h"
 #include "io/error_line.h"
+#include "io/image_io.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -353,6 +354,23 @@ const FlagTable<DetectOptions, Command>& table() {
                  return true;
              },
              Command::detect},
+            {"draw", "FILE",
+             "detect: write the frame with its lines and quadrangles over it as a PNG; track: "
+             "a pattern with one %d or %0Nd, e.g. out/f%03d.png, a PNG per frame drawn with the "
+             "tracked board (sides detected solid green, predicted dashed orange)",
+             [](DetectOptions o) { return o.draw.empty() ? std::string("none") : o.draw; },
+             [](const std::string& t, DetectOptions& o, std::string& e) {
+                 if (t.empty()) {
+                     e = "expected a file name";
+                     return false;
+                 }
+                 o.draw = t;
+                 return true;
+             },
+             Command::detect},
+            track_only(integer<uint32_t>(
+                "draw-every", "N", "track --draw: draw frames 0, N, 2N, ..., frames, 1..100000", 1,
+                100000, [](DetectOptions& o) -> uint32_t& { return o.draw_every; })),
             // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
             track_only(
                 {"model", "paper|turn",
@@ -432,6 +450,15 @@ int parse_command_line(const std::vector<std::string>& args, Command command,
     if (given.empty()) {
         qt::io::print_error_line(err, "quadtrack %s: no %s given (see quadtrack %s --help)", name,
                                  what_upper, name);
+        return 2;
+    }
+    std::string drawn;
+    if (command == Command::track && !options.draw.empty() &&
+        !io::numbered_file(options.draw, 0, drawn)) {
+        qt::io::print_error_line(
+            err,
+            "quadtrack track: --draw '%s' needs one %%d or %%0Nd (N 1..9) for the frame number",
+            options.draw.c_str());
         return 2;
     }
     if (options.params.quads.min_side_length > options.params.quads.max_side_length) {

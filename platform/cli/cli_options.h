@@ -37,6 +37,10 @@ struct DetectOptions {
                       // that fits
     DetectorCapacity capacity = DetectorCapacity::vga;  // the detector build the frames run on
     TrackOptions track;                                 // track only
+    // --draw: detect, a PNG file; track, a pattern with one %d or %0Nd (a PNG per frame drawn,
+    // numbered by frame). Empty: nothing drawn. draw_every: track draws frames 0, N, 2N, ...
+    std::string draw;
+    uint32_t draw_every = 1;
 
     DetectOptions();  // params.quads.display_aspect follows the display size
 };

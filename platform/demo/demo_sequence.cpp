@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli/board_runner.h"
+#include "cli/draw_results.h"
 #include "io/error_line.h"
 #include "io/overlay.h"
 #include "io/png_writer.h"
@@ -15,21 +16,6 @@ namespace qt::cli {
 namespace {
 
 double px(q16_16 v) { return v.raw / 65536.0; }
-
-// A 2 px wide line from a to b; dashed: 8 px on, 6 px off.
-void side_line(io::RgbImage& pic, Point16 a, Point16 b, io::Rgb colour, bool dashed) {
-    const double x1 = px(a.x), y1 = px(a.y), x2 = px(b.x), y2 = px(b.y);
-    const double len = std::hypot(x2 - x1, y2 - y1);
-    if (len < 1) return;
-    const double ux = (x2 - x1) / len, uy = (y2 - y1) / len;
-    const double on = dashed ? 8 : len, period = dashed ? 14 : len + 1;
-    for (double t = 0; t < len; t += period) {
-        const double e = std::fmin(t + on, len);
-        for (double o : {-0.5, 0.5})
-            pic.line(x1 + ux * t - uy * o, y1 + uy * t + ux * o, x1 + ux * e - uy * o,
-                     y1 + uy * e + ux * o, colour);
-    }
-}
 
 // "D P D T": side i detected, predicted or taken back from the detection.
 void side_letters(const TrackedQuad& t, uint8_t taken_back, char (&text)[8]) {
@@ -125,8 +111,7 @@ bool run_demo_sequence(const std::string& out_dir) {
         const TrackedQuad& t = tf.quad;
         const TrackedQuad& p = pf.quad;
         io::RgbImage pic = io::RgbImage::from_grey(d.image, 60);
-        for (const Segment& l : tf.lines)
-            pic.line(px(l.x1), px(l.y1), px(l.x2), px(l.y2), {255, 50, 50});
+        draw_lines(pic, tf.lines);
         // The truth, as the scene generator placed it: in its order TL, TR, BR, BL.
         for (const auto& c : sc.corners) pic.ring(c.x / 256.0, c.y / 256.0, 1, {255, 0, 255});
         char name[32];
@@ -136,16 +121,7 @@ bool run_demo_sequence(const std::string& out_dir) {
         if (t.state == TrackState::none) {
             std::printf("no quadrangle");
         } else {
-            for (int i = 0; i < 4; ++i) {
-                const bool detected = (t.detected >> i) & 1;
-                side_line(pic, t.corners[i], t.corners[(i + 1) & 3],
-                          detected ? io::Rgb{60, 255, 60} : io::Rgb{255, 140, 0}, !detected);
-            }
-            for (int i = 0; i < 4; ++i) {
-                const io::Rgb colour = i == 0 ? io::Rgb{0, 230, 255} : io::Rgb{255, 230, 0};
-                pic.ring(px(t.corners[i].x), px(t.corners[i].y), 4, colour);
-                pic.ring(px(t.corners[i].x), px(t.corners[i].y), 5, colour);
-            }
+            draw_tracked(pic, t);
             char sides[8];
             side_letters(t, tf.taken_back, sides);
             std::printf(

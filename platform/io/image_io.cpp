@@ -635,6 +635,14 @@ bool parse_pattern(const std::string& spec, std::string& prefix, int& pad, std::
 
 }  // namespace
 
+bool numbered_file(const std::string& pattern, long number, std::string& name) {
+    std::string prefix, suffix;
+    int pad = 0;
+    if (!parse_pattern(pattern, prefix, pad, suffix)) return false;
+    name = pattern_name(prefix, pad, number, suffix);
+    return true;
+}
+
 bool FrameSource::open(const std::string& spec, std::string& error) {
     try {
         kind_ = Kind::none;

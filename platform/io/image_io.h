@@ -64,6 +64,10 @@ bool write_y4m_header(std::FILE* f, const std::string& name, int width, int heig
 bool write_y4m_frame(std::FILE* f, const std::string& name, const GreyImage& img, bool mono,
                      std::string& error);
 
+// The file of `number` in a printf-style pattern as FrameSource reads them ("f%03d.png", 7 ->
+// "f007.png"): false when the pattern does not hold exactly one %d or %0Nd (N 1..9).
+bool numbered_file(const std::string& pattern, long number, std::string& name);
+
 // A sequence of grey frames, read one at a time. The spec given to open() is one of:
 //  - a printf-style pattern of PGM/PPM files (any spec containing '%'), with exactly one
 //    "%d" or "%0Nd" (N = 1..9) and "%%" for a literal '%', e.g. "frames/f%03d.pgm": numbered

@@ -82,3 +82,20 @@ if(ADDRESS_LIMIT)
         endif()
     endforeach()
 endif()
+
+# --draw: a PNG from detect; track draws frames 0, N, 2N, ... by its pattern, refuses a pattern
+# without a number (2) and reports a picture it cannot write (1).
+file(REMOVE ${DIR}/drawn.png)
+expect("detect --draw" 0 "^$" ARGS detect ${DIR}/frame.pgm --draw ${DIR}/drawn.png)
+file(READ ${DIR}/drawn.png magic LIMIT 8 HEX)
+if(NOT magic STREQUAL "89504e470d0a1a0a")
+    message(FATAL_ERROR "detect --draw wrote no PNG (${magic})")
+endif()
+expect("track --draw --draw-every 2" 0 "" ARGS track ${DIR}/f%d.pgm --draw ${DIR}/drawn_%02d.png
+    --draw-every 2)
+if(NOT EXISTS ${DIR}/drawn_00.png OR EXISTS ${DIR}/drawn_01.png)
+    message(FATAL_ERROR "track --draw-every 2 did not draw frame 0 alone of frames 0-1")
+endif()
+expect("track --draw without a number" 2 "needs one %d" ARGS track ${DIR}/frame.pgm --draw x.png)
+expect("detect --draw into no directory" 1 "^quadtrack detect: --draw: " ARGS
+    detect ${DIR}/frame.pgm --draw ${DIR}/no/such/dir/x.png)

@@ -2,7 +2,8 @@
 // of every command: qt::cli::parse_command_line (detect, track) and
 // qt::cli::parse_target_command_line (homography, target); usage and errors go to /dev/null.
 // Invariants (platform/cli/cli_options.h, platform/cli/target_options.h):
-//   - the result is -1 (run), 0 (--help/-h was given) or 2 (bad command line);
+//   - the result is -1 (run), 0 (--help/-h was given) or 2 (bad command line; 1 only when the
+//     usage could not be written, which /dev/null never refuses);
 //   - on -1 the positional arguments are the required number (detect, track, target: one;
 //     homography: two), each one of the arguments and not a flag, and target has its --roi;
 //   - on -1 every value lies in its flag's documented range (defaults included).
@@ -36,9 +37,11 @@ bool has(const std::vector<std::string>& args, const std::string& a) {
     return std::find(args.begin(), args.end(), a) != args.end();
 }
 
-// A positional argument: one of the arguments, not a flag.
+// A positional argument: one of the arguments, and not a flag ("-" is standard input) unless a
+// "--" ended the options.
 bool positional_ok(const std::vector<std::string>& args, const std::string& p) {
-    return has(args, p) && p.rfind("--", 0) != 0 && p != "-h";
+    const bool flag_like = p.size() > 1 && p[0] == '-';
+    return has(args, p) && (!flag_like || has(args, "--"));
 }
 
 bool q16_in(qt::q16_16 v, int lo, int hi) {
@@ -94,6 +97,7 @@ void check_detect(const qt::cli::DetectOptions& o) {
     QT_FUZZ_CHECK(o.track.filters >= 1 && o.track.filters <= 3);
     QT_FUZZ_CHECK(deg_at_most(o.track.gate_angle, 90));
     QT_FUZZ_CHECK(q16_in(o.track.gate_distance, 0, 1000));
+    QT_FUZZ_CHECK(o.draw_every >= 1 && o.draw_every <= 100000);
 }
 
 void check_target(const qt::cli::TargetOptions& o, bool target) {

@@ -1,0 +1,28 @@
+// What a command found, drawn over its frame for people to look at (quadtrack detect/track
+// --draw, the demo): the frame dimmed, the clustered lines in red, quadrangles with their
+// corners, a tracked board's sides solid green where detected and dashed orange where predicted.
+// Corner 0 is ringed in cyan, the others in yellow. Host only.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "io/grey_image.h"
+#include "io/overlay.h"
+#include "quads/quad_detector.h"
+#include "tracking/quad_tracker.h"
+
+namespace qt::cli {
+
+// A 2 px wide line from a to b (pixels); dashed: 8 px on, 6 px off.
+void side_line(io::RgbImage& pic, Point16 a, Point16 b, io::Rgb colour, bool dashed);
+// Lines in red.
+void draw_lines(io::RgbImage& pic, const std::vector<Segment>& lines);
+// Quadrangles: the first (the best) in green with its corners ringed, the others in thin yellow.
+void draw_quads(io::RgbImage& pic, const std::vector<Quad>& quads);
+// A tracked board (nothing when its state is none).
+void draw_tracked(io::RgbImage& pic, const TrackedQuad& t);
+
+// Writes `pic` as a PNG; false with one line in `error` when it cannot.
+bool write_picture(const std::string& path, const io::RgbImage& pic, std::string& error);
+
+}  // namespace qt::cli
