@@ -40,11 +40,30 @@ void homography(std::string& out, const Point16 (&corners)[4], uint16_t w, uint1
     out += "]]";
 }
 
-// "width":W,"height":H,"bin":N,"status":"..." (no braces).
+// "width":W,"height":H,"bin":N,"status":"...","full":[...] (no braces). "full" names each
+// capacity or work budget that filled (status capacity_exceeded exactly when one did).
 void frame_fields(std::string& out, const DetectResult& r) {
     out += "\"width\":" + std::to_string(r.width) + ",\"height\":" + std::to_string(r.height) +
            ",\"bin\":" + std::to_string(r.bin) + ",\"status\":\"" +
-           (r.status == Status::ok ? "ok" : "capacity_exceeded") + "\"";
+           (r.status == Status::ok ? "ok" : "capacity_exceeded") + "\",\"full\":[";
+    const LineStats& l = r.line_stats;
+    const bool filled[] = {l.edges_dropped > 0,
+                           l.hough.voters_exhausted,
+                           l.hough.budget_exhausted,
+                           l.hough.segments_dropped > 0,
+                           l.cluster.clusters_dropped > 0,
+                           r.quad_stats.pairs_dropped > 0};
+    static const char* const kNames[] = {"edges",    "voters", "walk_steps",
+                                         "segments", "lines",  "pairs"};
+    bool first = true;
+    for (size_t i = 0; i < sizeof filled / sizeof filled[0]; ++i) {
+        if (!filled[i]) continue;
+        out += first ? "\"" : ",\"";
+        out += kNames[i];
+        out += "\"";
+        first = false;
+    }
+    out += "]";
 }
 
 // [{"x1":..,...,"theta_deg":..}, ...]

@@ -145,6 +145,20 @@ TEST_CASE("detect --capacity qvga gives what the QVGA build finds in the same fr
         const Json j = JsonReader::parse(r.out);
         CHECK(j["bin"].num == 1);
         CHECK(j["status"].str == (s == qt::Status::ok ? "ok" : "capacity_exceeded"));
+        // "full" names what filled, in this order, and is empty exactly when the status is ok.
+        std::string full;
+        for (const Json& f : j["full"].items) full += f.str + " ";
+        const qt::LineStats& ls = det.lines().stats();
+        std::string want;
+        if (ls.edges_dropped > 0) want += "edges ";
+        if (ls.hough.voters_exhausted) want += "voters ";
+        if (ls.hough.budget_exhausted) want += "walk_steps ";
+        if (ls.hough.segments_dropped > 0) want += "segments ";
+        if (ls.cluster.clusters_dropped > 0) want += "lines ";
+        if (det.quad_stats().pairs_dropped > 0) want += "pairs ";
+        CHECK(full == want);
+        CHECK(full.empty() == (s == qt::Status::ok));
+        CHECK(!full.empty());  // the strokes fill the QVGA build's capacities
         REQUIRE(j["lines"].items.size() == det.lines().line_count());
         for (size_t i = 0; i < j["lines"].items.size(); ++i) {
             CHECK(std::fabs(j["lines"][i]["x1"].num - det.lines().lines()[i].x1.raw / 65536.0) <
