@@ -41,6 +41,7 @@ struct DetectOptions {
     // numbered by frame). Empty: nothing drawn. draw_every: track draws frames 0, N, 2N, ...
     std::string draw;
     uint32_t draw_every = 1;
+    bool track_lines = true;  // track: each frame's line carries the detected lines
 
     DetectOptions();  // params.quads.display_aspect follows the display size
 };

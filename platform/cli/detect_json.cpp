@@ -123,7 +123,8 @@ std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t 
 }
 
 std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t,
-                       QuadTrackLost lost_reason, uint16_t display_width, uint16_t display_height) {
+                       QuadTrackLost lost_reason, uint16_t display_width, uint16_t display_height,
+                       bool with_lines) {
     const bool has_quad = t.state != TrackState::none;
     std::string out = "{\"frame\":" + std::to_string(frame) + ",";
     frame_fields(out, r);
@@ -147,8 +148,10 @@ std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t,
     out += ",\"lost\":";
     const char* lost = quad_track_lost_name(lost_reason);
     out += lost ? std::string("\"") + lost + "\"" : std::string("null");
-    out += ",\"lines\":";
-    lines_array(out, r);
+    if (with_lines) {
+        out += ",\"lines\":";
+        lines_array(out, r);
+    }
     out += "}";
     return out;
 }

@@ -17,7 +17,10 @@ std::string homography_usage() {
            "  A and B are PGM/PPM/Y4M frames (the first frame of a Y4M); either may be - for\n"
            "  standard input. Frames larger than 640 x 480 pixels are binned to fit (--bin).\n"
            "  Prints {\"H\",\"inliers\",\"matches\",...}: H maps A's pixels into B (see\n"
-           "  docs/cli.md).\n"
+           "  docs/cli.md). Made for neighbouring frames of one camera: a corner of A is matched\n"
+           "  only within --search-radius of the same place in B, so the motion between A and\n"
+           "  B must stay within it (in the binned frame's pixels); a wider baseline gives\n"
+           "  status too_few_pairs or no_consensus, with H and reprojection_px null.\n"
            "options (--name VALUE or --name=VALUE):\n" +
            target_options_help(GeometryCommand::homography);
 }

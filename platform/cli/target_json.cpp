@@ -49,8 +49,9 @@ std::string homography_json(const FrameHomography& g, unsigned features_a, unsig
     }
     s += ",\"inliers\":" + std::to_string(g.ransac.inliers) +
          ",\"matches\":" + std::to_string(g.matches) + ",\"status\":\"" +
-         homography_status_name(g.ransac.status) +
-         "\",\"reprojection_px\":" + num(g.ransac.reprojection_px * bin_b, "%.4f") +
+         homography_status_name(g.ransac.status) + "\",\"reprojection_px\":" +
+         (g.ransac.status == HomographyStatus::ok ? num(g.ransac.reprojection_px * bin_b, "%.4f")
+                                                  : std::string("null")) +
          ",\"features\":[" + std::to_string(features_a) + "," + std::to_string(features_b) +
          "],\"bin\":[" + std::to_string(bin_a) + "," + std::to_string(bin_b) + "]}";
     return s;

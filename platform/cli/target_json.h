@@ -2,12 +2,12 @@
 // (docs/cli.md), each written on one line:
 //   homography: {"H":[[h1,h2,h3],[h4,h5,h6],[h7,h8,1]]|null,"inliers":N,"matches":M,
 //                "status":"ok"|"too_few_pairs"|"degenerate"|"no_consensus",
-//                "reprojection_px":E,"features":[NA,NB],"bin":[BA,BB]}
+//                "reprojection_px":E|null,"features":[NA,NB],"bin":[BA,BB]}
 //     H maps pixels of image A into image B ((x', y', w') = H (x, y, 1), pixel centres at
 //     integers), null unless status is "ok"; inliers of the matches; reprojection_px the RMS
-//     of equation (7) over the inliers, in B's pixels; bin the factors A and B were binned by
-//     to fit the build (1: not binned; docs/cli.md): H and E are in the input's pixels all the
-//     same.
+//     of equation (7) over the inliers, in B's pixels (null with H); bin the factors A and B
+//     were binned by to fit the build (1: not binned; docs/cli.md): H and E are in the input's
+//     pixels all the same.
 //   target (JSON Lines, one per frame):
 //               {"frame":K,"x":X,"y":Y,"state":"measured"|"reacquired"|"predicted"|
 //                "out_of_view"|"lost","nds":D,"reset":true|false,"matches":M,"inliers":N,

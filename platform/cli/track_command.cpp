@@ -79,8 +79,9 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
                          result.quads.data(), static_cast<uint16_t>(result.quads.size()));
         to_input_pixels(result, frame.width, frame.height);
         to_input_pixels(t, bin);
-        const std::string line = track_json(k, result, t, tracker.stats().lost_reason,
-                                            options.display_width, options.display_height);
+        const std::string line =
+            track_json(k, result, t, tracker.stats().lost_reason, options.display_width,
+                       options.display_height, options.track_lines);
         if (!options.draw.empty() && static_cast<uint32_t>(k) % options.draw_every == 0) {
             std::string file;
             io::numbered_file(options.draw, k, file);  // checked when the flags were parsed

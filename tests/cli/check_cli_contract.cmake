@@ -99,3 +99,13 @@ endif()
 expect("track --draw without a number" 2 "needs one %d" ARGS track ${DIR}/frame.pgm --draw x.png)
 expect("detect --draw into no directory" 1 "^quadtrack detect: --draw: " ARGS
     detect ${DIR}/frame.pgm --draw ${DIR}/no/such/dir/x.png)
+
+# track --lines no: each frame's line without the detected lines (with them by default).
+execute_process(COMMAND ${q} track ${DIR}/f%d.pgm --lines no OUTPUT_VARIABLE out RESULT_VARIABLE rc
+    ERROR_QUIET)
+execute_process(COMMAND ${q} track ${DIR}/f%d.pgm OUTPUT_VARIABLE with RESULT_VARIABLE rc_with
+    ERROR_QUIET)
+if(NOT rc EQUAL 0 OR out MATCHES "\"lines\":" OR NOT out MATCHES "\"frame\":1," OR
+   NOT with MATCHES "\"lines\":")
+    message(FATAL_ERROR "track --lines no: exit ${rc}, '${out}'; by default: '${with}'")
+endif()

@@ -96,6 +96,7 @@ TEST_CASE("quadtrack homography: errors and a pair with nothing to match", "[tar
     const Json j = JsonReader::parse(none.out);
     CHECK(j["H"].type == Json::Type::null);
     CHECK(j["status"].str == "too_few_pairs");
+    CHECK(j["reprojection_px"].type == Json::Type::null);  // no H, no fit: not a perfect 0
     CHECK(j["features"][0].num == 0);
 
     check_error(homography({flat}), 2, "expected two images A B, got 1 argument");
