@@ -65,6 +65,19 @@ void draw_tracked(io::RgbImage& pic, const TrackedQuad& t) {
     corner_rings(pic, t.corners);
 }
 
+void draw_target(io::RgbImage& pic, double x, double y, int w, int h, TargetState state) {
+    const bool seen = state == TargetState::measured || state == TargetState::reacquired;
+    const io::Rgb colour = seen                         ? kDetected
+                           : state == TargetState::lost ? io::Rgb{255, 40, 40}
+                                                        : kPredicted;
+    const auto at = [](double v) { return q16_16::from_raw(static_cast<int32_t>(v * 65536.0)); };
+    const double x0 = x - (w - 1) / 2.0, y0 = y - (h - 1) / 2.0, x1 = x0 + w - 1, y1 = y0 + h - 1;
+    const Point16 box[4] = {{at(x0), at(y0)}, {at(x1), at(y0)}, {at(x1), at(y1)}, {at(x0), at(y1)}};
+    for (int i = 0; i < 4; ++i) side_line(pic, box[i], box[(i + 1) & 3], colour, !seen);
+    pic.line(x - 3, y, x + 3, y, colour);
+    pic.line(x, y - 3, x, y + 3, colour);
+}
+
 bool write_picture(const std::string& path, const io::RgbImage& pic, std::string& error) {
     return io::write_png(path, pic.width, pic.height, 3, pic.pixels, error);
 }

@@ -1,7 +1,7 @@
 // What a command found, drawn over its frame for people to look at (quadtrack detect/track
 // --draw, the demo): the frame dimmed, the clustered lines in red, quadrangles with their
-// corners, a tracked board's sides solid green where detected and dashed orange where predicted.
-// Corner 0 is ringed in cyan, the others in yellow. Host only.
+// corners, a tracked board's sides solid green where detected and dashed orange where predicted,
+// a tracked target's box. Corner 0 is ringed in cyan, the others in yellow. Host only.
 #pragma once
 #include <string>
 #include <vector>
@@ -9,6 +9,7 @@
 #include "io/grey_image.h"
 #include "io/overlay.h"
 #include "quads/quad_detector.h"
+#include "target/float/target_tracker.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -21,6 +22,9 @@ void draw_lines(io::RgbImage& pic, const std::vector<Segment>& lines);
 void draw_quads(io::RgbImage& pic, const std::vector<Quad>& quads);
 // A tracked board (nothing when its state is none).
 void draw_tracked(io::RgbImage& pic, const TrackedQuad& t);
+// The target's w × h box centred at (x, y) px: solid green when measured or reacquired, dashed
+// orange when predicted or out of view, red when lost.
+void draw_target(io::RgbImage& pic, double x, double y, int w, int h, TargetState state);
 
 // Writes `pic` as a PNG; false with one line in `error` when it cannot.
 bool write_picture(const std::string& path, const io::RgbImage& pic, std::string& error);

@@ -4,6 +4,7 @@
 
 #include "base/floor_div.h"
 #include "cli/board_runner.h"
+#include "cli/draw_results.h"
 #include "cli/frame_loop.h"
 #include "cli/target_json.h"
 #include "io/error_line.h"
@@ -88,6 +89,19 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
             qt::io::print_error_line(err, "quadtrack target: %s: frame %d: %s", name.c_str(), k,
                                      status_name(s));
             return 1;
+        }
+        if (!options.draw.empty() && static_cast<uint32_t>(k) % options.draw_every == 0) {
+            // The estimate in the input's pixels (binned pixel u is N·u + (N − 1)/2).
+            const TargetEstimate& e = result.estimate;
+            const double x = bin * e.x + (bin - 1) / 2.0, y = bin * e.y + (bin - 1) / 2.0;
+            std::string file;
+            io::numbered_file(options.draw, k, file);  // checked when the flags were parsed
+            io::RgbImage pic = io::RgbImage::from_grey(frame, 60);
+            draw_target(pic, x, y, options.roi_w, options.roi_h, e.state);
+            if (!write_picture(file, pic, error)) {
+                qt::io::print_error_line(err, "quadtrack target: --draw: %s", error.c_str());
+                return 1;
+            }
         }
         std::fprintf(out, "%s\n", target_json(k, result, bin).c_str());
         return io::output_written(out, err, "quadtrack target") ? 0 : 1;

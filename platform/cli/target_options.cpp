@@ -8,6 +8,7 @@
 #include "cli/flag_table.h"
 #include "cli/parse_number.h"
 #include "io/error_line.h"
+#include "io/image_io.h"
 
 namespace qt::cli {
 
@@ -149,6 +150,24 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                                   : std::string("none, required");
              },
              parse_roi, GeometryCommand::target},
+            {"draw", "PATTERN",
+             "a pattern with one %d or %0Nd, e.g. out/f%03d.png: a PNG per frame drawn with the "
+             "target's box (solid green measured or reacquired, dashed orange predicted or out "
+             "of view, red lost)",
+             [](TargetOptions o) { return o.draw.empty() ? std::string("none") : o.draw; },
+             [](const std::string& t, TargetOptions& o, std::string& e) {
+                 std::string name;
+                 if (!io::numbered_file(t, 0, name)) {
+                     e = "'" + t + "' needs one %d or %0Nd (N 1..9) for the frame number";
+                     return false;
+                 }
+                 o.draw = t;
+                 return true;
+             },
+             GeometryCommand::target},
+            integer<uint32_t>("draw-every", "N", "--draw: frames 0, N, 2N, ..., frames, 1..100000",
+                              1, 100000,
+                              [](TargetOptions& o) -> uint32_t& { return o.draw_every; }),
             {"method", "NAME",
              "fused (the paper's method), filter_only, homography_only or template_only",
              [](TargetOptions o) {

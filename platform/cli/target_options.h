@@ -28,6 +28,10 @@ struct TargetOptions {
     bool roi_set = false;                            // target: --roi is required
     int roi_x = 0, roi_y = 0, roi_w = 0, roi_h = 0;  // px, frame 0 (the input's pixels)
     uint8_t bin = 0;  // binning factor of frames over 640 × 480, 1..16; 0: the smallest that fits
+    // target --draw: a pattern with one %d or %0Nd, a PNG per frame drawn (frames 0, N, 2N, ...
+    // with draw_every N); empty: none.
+    std::string draw;
+    uint32_t draw_every = 1;
     TargetOptions();
 };
 

@@ -109,3 +109,12 @@ if(NOT rc EQUAL 0 OR out MATCHES "\"lines\":" OR NOT out MATCHES "\"frame\":1," 
    NOT with MATCHES "\"lines\":")
     message(FATAL_ERROR "track --lines no: exit ${rc}, '${out}'; by default: '${with}'")
 endif()
+
+# target --draw: a PNG per frame by its pattern; a pattern without a number is a command-line error.
+file(REMOVE ${DIR}/target_00.png)
+expect("target --draw" 0 "" ARGS target ${DIR}/f%d.pgm --roi 20,15,16,12 --draw ${DIR}/target_%02d.png)
+if(NOT EXISTS ${DIR}/target_00.png OR NOT EXISTS ${DIR}/target_01.png)
+    message(FATAL_ERROR "target --draw did not draw frames 0 and 1")
+endif()
+expect("target --draw without a number" 2 "needs one %d" ARGS target ${DIR}/f%d.pgm
+    --roi 20,15,16,12 --draw x.png)
