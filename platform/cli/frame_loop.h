@@ -14,7 +14,9 @@ namespace qt::cli {
 // after the last frame (with a warning line on `err` when a numbered sequence stopped at a gap);
 // 2 after one line "quadtrack COMMAND: ..." on `err` for a malformed pattern, 1 when the sequence
 // cannot be opened, a frame cannot be read, there are no frames or a frame's size differs from
-// frame 0's; or the first non-zero value body returns (body writes its own error line).
+// frame 0's; or the first non-zero value body returns (body writes its own error line). When
+// `err` is a terminal, a progress line (frames done, frames a second) is rewritten on it at most
+// twice a second.
 int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
                    const std::function<int(int, const io::GreyImage&)>& body);
 
