@@ -47,12 +47,35 @@ bool run_chain(Detector& det, const io::GreyImage& frame, const BoardParams& par
     return true;
 }
 
+HostBoardDetector vga_detector;   // ~90 KB: static, as firmware keeps it
+BoardDetectorQvga qvga_detector;  // ~50 KB
+
 }  // namespace
+
+q16_16 evidence_share(const TrackedQuad& quad, const RefineParams& params,
+                      DetectorCapacity capacity) {
+    if (quad.state == TrackState::none) return q16_16::from_int(0);
+    const EdgeList& edges = capacity == DetectorCapacity::qvga ? qvga_detector.lines().edges()
+                                                               : vga_detector.lines().edges();
+    RefineParams scored = params;
+    scored.verify = false;  // scored, never turned down
+    Quad q{};
+    const Segment* lines[4];
+    for (int i = 0; i < 4; ++i) {
+        q.corners[i] = quad.corners[i];
+        q.lines[i] = static_cast<uint8_t>(i);
+        lines[i] = &quad.sides[i];
+    }
+    Segment sides[4];
+    q16_16 share = q16_16::from_int(0);
+    refine_verified(edges, lines, scored, q, sides, &share);
+    return share;
+}
 
 bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
                   uint8_t bin, DetectorCapacity capacity) {
-    static HostBoardDetector vga;   // ~90 KB: static, as firmware keeps it
-    static BoardDetectorQvga qvga;  // ~50 KB
+    HostBoardDetector& vga = vga_detector;
+    BoardDetectorQvga& qvga = qvga_detector;
     result = DetectResult{};
     const int w = bin > 0 ? frame.width / bin : 0, h = bin > 0 ? frame.height / bin : 0;
     result.width = static_cast<uint16_t>(w);

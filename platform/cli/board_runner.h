@@ -43,6 +43,13 @@ struct DetectResult {
 bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
                   uint8_t bin = 1, DetectorCapacity capacity = DetectorCapacity::vga);
 
+// The share of a tracked board's perimeter with edge evidence of each side's polarity in the
+// last frame detect_board ran with `capacity` (its edge list; the board in that frame's binned
+// pixels), [0, 1]: what detect's "score" measures for its quadrangles (quad_refine.h), 0
+// without a board.
+q16_16 evidence_share(const TrackedQuad& quad, const RefineParams& params,
+                      DetectorCapacity capacity);
+
 // The bin factor for a width × height frame: `requested` (1..kMaxBinFactor) when not 0,
 // otherwise the smallest that brings the frame within the capacity's frame (640 × 480 for
 // vga, 320 × 240 for qvga). Returns 0 with one line in `error` when none does, or the

@@ -122,7 +122,7 @@ std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t 
     return out;
 }
 
-std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t,
+std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t, q16_16 score,
                        QuadTrackLost lost_reason, uint16_t display_width, uint16_t display_height,
                        bool with_lines) {
     const bool has_quad = t.state != TrackState::none;
@@ -139,7 +139,9 @@ std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t,
             out += i ? "," : "";
             out += (t.detected >> i) & 1 ? "\"detected\"" : "\"predicted\"";
         }
-        out += "],\"display_homography\":";
+        out += "],\"score\":";
+        number(out, "%.4f", score.raw / 65536.0);
+        out += ",\"display_homography\":";
         homography(out, t.corners, display_width, display_height);
         out += "}";
     } else {

@@ -77,10 +77,11 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         TrackedQuad t =
             tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
                          result.quads.data(), static_cast<uint16_t>(result.quads.size()));
+        const q16_16 score = evidence_share(t, options.params.refine, options.capacity);
         to_input_pixels(result, frame.width, frame.height);
         to_input_pixels(t, bin);
         const std::string line =
-            track_json(k, result, t, tracker.stats().lost_reason, options.display_width,
+            track_json(k, result, t, score, tracker.stats().lost_reason, options.display_width,
                        options.display_height, options.track_lines);
         if (!options.draw.empty() && static_cast<uint32_t>(k) % options.draw_every == 0) {
             std::string file;

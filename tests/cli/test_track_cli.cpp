@@ -141,6 +141,13 @@ TEST_CASE("track carries the board through frames where its top and bottom sides
                 const bool top_or_bottom = i == 1 || i == 3;
                 CHECK(q["source"][i].str == (hidden && top_or_bottom ? "predicted" : "detected"));
             }
+            // The evidence share: the whole perimeter in plain view; with the top and bottom
+            // hidden, at most the left and right sides' share of a 4:3 board's perimeter
+            // (3 + 3 of 14) and what shows of the others.
+            if (hidden)
+                CHECK(q["score"].num < 0.5);
+            else
+                CHECK(q["score"].num > 0.9);
             REQUIRE(q["corners"].items.size() == 4);
             for (size_t i = 0; i < 4; ++i) {
                 const Json& c = q["corners"][i];
