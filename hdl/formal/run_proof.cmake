@@ -38,7 +38,7 @@ endif()
 
 execute_process(
     COMMAND ${YOSYS} -q -l ${WORK}/proof.log -p
-        "read_verilog -I${RTL} -formal ${PROPS} ${_gradient} ${RTL}/axis_slice.v ${RTL}/gradient_direction.v; chparam -set MAX_WIDTH 2 stream_props; prep -top stream_props; flatten; memory_map; opt -fast; sat -seq ${DEPTH} -prove-asserts -set-assumes -set-init-zero -verify"
+        "read_verilog -I${RTL} -formal ${PROPS} ${_gradient} ${RTL}/axis_slice.v ${RTL}/gradient_direction.v ${RTL}/gradient_dir_fold.v ${RTL}/gradient_dir_s51.v ${RTL}/gradient_dir_bin.v; chparam -set MAX_WIDTH 2 stream_props; prep -top stream_props; flatten; memory_map; opt -fast; sat -seq ${DEPTH} -prove-asserts -set-assumes -set-init-zero -verify"
     RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
 file(READ ${WORK}/proof.log _log)
 if(DEFINED MUTANT)

@@ -1,4 +1,5 @@
 `timescale 1ns / 1ps
+`default_nettype none
 
 // AXI4-Stream register slice (skid buffer): two registers, full throughput, and no
 // combinational path from m_ready to s_ready (s_ready is a flip-flop's output) nor from s_valid
@@ -49,3 +50,5 @@ module axis_slice #(
             k_data <= s_data;
     end
 endmodule
+
+`default_nettype wire

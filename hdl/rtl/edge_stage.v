@@ -1,4 +1,5 @@
 `timescale 1ns / 1ps
+`default_nettype none
 
 // The edge stage: gradient words in (the gradient block's AXI4-Stream output), edge points out
 // (edge_beat.vh): L1 magnitude threshold, non-maximum suppression along the direction bin and
@@ -74,16 +75,6 @@ module edge_stage #(
     output wire        m_axis_tvalid,
     input  wire        m_axis_tready
 );
-    function integer clog2;
-        input integer v;
-        integer r;
-        begin
-            r = 0;
-            while ((1 << r) < v)
-                r = r + 1;
-            clog2 = r;
-        end
-    endfunction
 
     generate
         if (MAX_WIDTH < 1 || MAX_WIDTH > 2048) begin : g_check_width
@@ -91,7 +82,7 @@ module edge_stage #(
         end
     endgenerate
 
-    localparam XW = (MAX_WIDTH < 2) ? 1 : clog2(MAX_WIDTH);
+    localparam XW = (MAX_WIDTH < 2) ? 1 : $clog2(MAX_WIDTH);
     localparam CW = `QT_EP_COORD_BITS;                      // 11
 
     wire rst = ~aresetn;
@@ -609,3 +600,5 @@ module edge_stage #(
     assign {m_axis_tuser, m_axis_tlast, m_axis_tdata} = o_beat;
     assign m_axis_tvalid = o_v;
 endmodule
+
+`default_nettype wire

@@ -1,4 +1,5 @@
 `timescale 1ns / 1ps
+`default_nettype none
 
 // The FPGA front end a hardware engineer drops in: camera pixels in on AXI4-Stream video
 // (tuser = start of frame, tlast = end of line), the edge points the microcontroller's edge list
@@ -52,3 +53,5 @@ module frontend #(
         .m_axis_tdata(m_axis_tdata), .m_axis_tuser(m_axis_tuser), .m_axis_tlast(m_axis_tlast),
         .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready));
 endmodule
+
+`default_nettype wire

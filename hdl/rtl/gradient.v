@@ -1,4 +1,5 @@
 `timescale 1ns / 1ps
+`default_nettype none
 
 // Streaming gradient (central differences, replicated borders), one pixel per clock, on
 // AXI4-Stream video: s_axis_tuser = start of frame, s_axis_tlast = end of line, aresetn.
@@ -68,16 +69,6 @@ module gradient #(
 
     output reg                   error         // one clock per framing error (input-timed)
 );
-    function integer clog2;
-        input integer v;
-        integer r;
-        begin
-            r = 0;
-            while ((1 << r) < v)
-                r = r + 1;
-            clog2 = r;
-        end
-    endfunction
 
     // Parameters checked at elaboration: an instance of a module that does not exist stops
     // Icarus and yosys with its name in the message.
@@ -93,9 +84,9 @@ module gradient #(
         end
     endgenerate
 
-    localparam XW = (MAX_WIDTH < 2) ? 1 : clog2(MAX_WIDTH);   // column index bits
+    localparam XW = (MAX_WIDTH < 2) ? 1 : $clog2(MAX_WIDTH);   // column index bits
     localparam [XW-1:0] MAXM2 = (MAX_WIDTH < 2) ? 0 : MAX_WIDTH - 2;
-    localparam RW = clog2(MAX_ROWS + 1);                      // row counter bits
+    localparam RW = $clog2(MAX_ROWS + 1);                      // row counter bits
 
     wire rst = ~aresetn;
 
@@ -603,3 +594,5 @@ module gradient #(
         .m_data({m_axis_tuser[1], m_axis_tuser[0], m_axis_tlast, m_axis_tdata}),
         .m_valid(m_axis_tvalid), .m_ready(m_axis_tready));
 endmodule
+
+`default_nettype wire
