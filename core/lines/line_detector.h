@@ -261,7 +261,7 @@ private:
 
 // QVGA: 320 × 240, 4096 edge points, 2° × 2 px accumulator, 64 segments, 32 lines.
 using LineDetectorQvga = LineDetector<Qvga>;
-// VGA: 640 × 480, 8192 edge points, 2° × 2 px accumulator, 128 segments, 64 lines.
+// VGA: 640 × 480, 16384 edge points, 2° × 2 px accumulator, 128 segments, 64 lines.
 using LineDetectorVga = LineDetector<Vga>;
 
 }  // namespace qt
