@@ -63,6 +63,9 @@
 #   hdl-latency    clocks from a pixel's arrival to its gradient word (Icarus, no stalls)
 #   hdl-soak       the gradient block against its model on QT_SOAK_SEEDS (10) soak streams of
 #                  QT_SOAK_PIXELS (10^6, at most ~1.9*10^6) pixels: faults, resets, 30 % stalls
+#   hdl-mutants    each single mutant of hdl/mutants/catalogue.txt (slips in hdl/rtl/) run through
+#                  the test command's HDL tests, fastest first: which test caught it, the kill
+#                  ratio (--quick: every 5th mutant)
 #   long           the ctests labelled long, which the test command leaves out: in the host
 #                  preset the whole VGA frame through both HDL blocks with 30 % stalls and the
 #                  proof at 20 clocks; in the aarch64 preset the test cases tagged [slow]
@@ -79,7 +82,7 @@ if [ "${1:-}" = "--quick" ]; then
     shift
 fi
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host pictures track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table memory track-m4 hdl-latency hdl-soak long fpga fuzz)
+[ ${#names[@]} -gt 0 ] || names=(gradient-host lines-host quads-host photos-host pictures track-host streams-host homography-host target-host footage-host soak gradient-m4 budgets budgets-m3 budgets-m4f target-m4f budget-table memory track-m4 hdl-latency hdl-soak hdl-mutants long fpga fuzz)
 
 # full_or_quick FULL QUICK: the size of a bench's input set, full or --quick (about a tenth).
 full_or_quick() {
@@ -286,6 +289,11 @@ run_bench() {
         hdl-latency)
             host_build all
             (cd build/host && ctest -R '^hdl_.*_nostall$' -V | grep -E 'LATENCY|TRAILER|STALLS|PASS|Failed') ;;
+        hdl-mutants)
+            host_build qt_vectors
+            python3 hdl/mutants/run_mutants.py --hdl hdl --vectors vectors/gradient \
+                --work build/hdl-mutants --qt-vectors build/host/hw_model/qt_vectors \
+                --every "$(full_or_quick 1 5)" ;;
         hdl-soak)
             host_build qt_vectors hdl_benches
             local seeds=${QT_SOAK_SEEDS:-$(full_or_quick 10 1)}
@@ -324,7 +332,7 @@ run_bench() {
 # The docs page whose figures each bench writes (between its <!-- bench NAME --> markers).
 doc_of() {
     case "$1" in
-        gradient-host|gradient-m4|hdl-latency|hdl-soak|fpga) echo docs/gradient.md ;;
+        gradient-host|gradient-m4|hdl-latency|hdl-soak|hdl-mutants|fpga) echo docs/gradient.md ;;
         lines-host) echo docs/lines.md ;;
         quads-host|photos-host) echo docs/quadrangles.md ;;
         track-host|track-m4) echo docs/tracking.md ;;
