@@ -25,6 +25,10 @@
 //   +trail_max=K          (FRONT = 1, no stalls, no resets) every frame's edge trailer must
 //                         leave at most 2*W + K clocks after the frame's last pixel
 //   +max_stalls=N         (no stalls) at most N clocks with a beat offered and not taken
+//   +scramble_threshold=1 (FRONT = 1) cfg_threshold is T only in the clocks the gradient link
+//                         offers a frame's first word (when the edge stage must read it) and a
+//                         random other value in every other clock: a block that reads it at any
+//                         other time gives other edges
 // cfg_height is driven from a start-of-frame beat's height field when that beat is offered and
 // held until the next one (a register, as software sets it).
 // Exit status is non-zero ($fatal) on a mismatch, a missing or extra beat, a stuck stream, a
@@ -56,7 +60,7 @@ module tb_front;
     reg [RB-1:0]      rs_mem   [0:RDEPTH-1];
     reg [8*1024-1:0]  in_file, out_file, edge_file, rs_file;
     integer           nin, nout, nedge, nerr, seed, stall, corrupt, corrupt_e, nres;
-    integer           threshold, lat_extra, trail_max, max_stalls;
+    integer           threshold, lat_extra, trail_max, max_stalls, scramble;
 
     // ---------------------------------------------------------------- DUT
     reg         clk = 1'b0;
@@ -121,6 +125,18 @@ module tb_front;
         end
     endfunction
 
+    // The threshold between frames' first words: any other value (its own generator, so the
+    // stall and reset patterns stay those of the seed). The link's signals are registers, so the
+    // value set at the falling edge holds through the rising edge that may take the word.
+    reg [31:0] rng_thr = 32'h6d2b79f5;
+    always @(negedge clk) begin
+        if (scramble != 0) begin
+            rng_thr = xorshift32(rng_thr);
+            cfg_threshold <= (g_tvalid && g_tuser[0]) ? threshold[8:0] :
+                             (rng_thr[8:0] == threshold[8:0] ? ~rng_thr[8:0] : rng_thr[8:0]);
+        end
+    end
+
     // ---------------------------------------------------------------- bookkeeping
     integer cyc;                 // clocks since the first reset release
     integer iidx;                // next input beat to offer
@@ -184,6 +200,7 @@ module tb_front;
         if (!$value$plusargs("lat_extra=%d", lat_extra)) lat_extra = -1;
         if (!$value$plusargs("trail_max=%d", trail_max)) trail_max = -1;
         if (!$value$plusargs("max_stalls=%d", max_stalls)) max_stalls = -1;
+        if (!$value$plusargs("scramble_threshold=%d", scramble)) scramble = 0;
         nres = 0;
         if ($value$plusargs("resets=%s", rs_file)) begin
             if (!$value$plusargs("nresets=%d", nres))
