@@ -52,15 +52,15 @@ def run(cmd, **kw):
 
 
 def test_order(build):
-    """The tests that check the RTL, fastest first: the direction table, the gradient block's
-    cases, the front end's, the bounded proof, the soak."""
+    """The tests that check the RTL, fastest first: the direction table, the row limit, the
+    gradient block's cases, the front end's, the bounded proof, the soak."""
     listed = run(["ctest", "--test-dir", build, "-N", "-L", "hdl", "-LE", "long"]).stdout
     names = re.findall(r"Test\s+#\d+: (\S+)", listed)
     names = [n for n in names if not CHECKER_TESTS.match(n)]
 
     def rank(n):
-        for k, prefix in enumerate(["hdl_direction", "hdl_gradient_", "hdl_front_",
-                                    "hdl_formal_", "hdl_soak"]):
+        for k, prefix in enumerate(["hdl_direction", "hdl_row_limit", "hdl_gradient_",
+                                    "hdl_front_", "hdl_formal_", "hdl_soak"]):
             if n.startswith(prefix):
                 return (k, "nostall" in n, "640x480" in n, n)
         return (9, False, False, n)
