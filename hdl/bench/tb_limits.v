@@ -104,6 +104,13 @@ module tb_limits;
         end
     endtask
 
+    // A block that stops taking beats fails the bench instead of hanging it (the whole run
+    // takes about 25 000 clocks).
+    initial begin
+        #2000000;
+        $fatal(1, "tb_limits: still running after 200 000 clocks (a beat never taken?)");
+    end
+
     integer r, c;
     initial begin
         settle(3);
