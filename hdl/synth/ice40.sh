@@ -28,8 +28,8 @@ echo "seeds: $seeds; constraint: aclk 100 MHz (hdl/synth/ice40_clock.py)"
 
 rtl=$hdl/rtl
 src=("$rtl/frontend.v" "$rtl/gradient.v" "$rtl/edge_stage.v" "$rtl/axis_slice.v"
-     "$rtl/gradient_direction.v" "$rtl/gradient_dir_fold.v" "$rtl/gradient_dir_s51.v"
-     "$rtl/gradient_dir_bin.v")
+     "$rtl/gradient_dir_fold.v" "$rtl/gradient_dir_s51.v" "$rtl/gradient_dir_bin.v"
+     "$rtl/gradient_direction.v")
 
 # No latches anywhere in the design (elaborated RTL).
 yosys -q -l "$out/latch_check.log" -p "read_verilog -I$rtl ${src[*]}; hierarchy -top frontend;
