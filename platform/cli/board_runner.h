@@ -57,6 +57,9 @@ q16_16 evidence_share(const TrackedQuad& quad, const RefineParams& params,
 uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error,
                    DetectorCapacity capacity = DetectorCapacity::vga);
 
+// A coordinate in the binned frame's pixels -> the input's: binned pixel u is input pixel
+// N·u + (N − 1)/2 (binning.h).
+inline double input_pixel(double u, uint8_t bin) { return bin * u + (bin - 1) / 2.0; }
 // A line in the binned frame's pixels -> the same line in the input's (x = N·u + (N − 1)/2):
 // end points and closest point mapped, theta kept unless rho's sign turns (rho >= 0 always).
 Segment to_input_pixels(const Segment& s, uint8_t bin);

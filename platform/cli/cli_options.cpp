@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "cli/board_runner.h"
+#include "cli/draw_results.h"
 #include "cli/flag_table.h"
 #include "cli/parse_number.h"
 #include "io/error_line.h"
-#include "io/image_io.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -464,13 +464,10 @@ int parse_command_line(const std::vector<std::string>& args, Command command,
                                  what_upper, name);
         return 2;
     }
-    std::string drawn;
-    if (command == Command::track && !options.draw.empty() &&
-        !io::numbered_file(options.draw, 0, drawn)) {
-        qt::io::print_error_line(
-            err,
-            "quadtrack track: --draw '%s' needs one %%d or %%0Nd (N 1..9) for the frame number",
-            options.draw.c_str());
+    // --draw is a file for detect, a pattern for track: checked once the command is known.
+    std::string why;
+    if (command == Command::track && !options.draw.empty() && !draw_pattern_ok(options.draw, why)) {
+        qt::io::print_error_line(err, "quadtrack track: --draw: %s", why.c_str());
         return 2;
     }
     if (options.params.quads.min_side_length > options.params.quads.max_side_length) {

@@ -52,15 +52,12 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         return 1;
     }
     to_input_pixels(result, frame.width, frame.height);
-    if (!options.draw.empty()) {
-        io::RgbImage pic = io::RgbImage::from_grey(frame, 60);
+    const auto found = [&](io::RgbImage& pic) {
         draw_lines(pic, result.lines);
         draw_quads(pic, result.quads);
-        if (!write_picture(options.draw, pic, error)) {
-            qt::io::print_error_line(err, "quadtrack detect: --draw: %s", error.c_str());
-            return 1;
-        }
-    }
+    };
+    if (!options.draw.empty() && !write_drawn(options.draw, frame, found, err, "quadtrack detect"))
+        return 1;
     std::fprintf(out, "%s\n",
                  detect_json(result, options.display_width, options.display_height).c_str());
     return io::output_written(out, err, "quadtrack detect") ? 0 : 1;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "io/error_line.h"
+#include "io/image_io.h"
 #include "io/png_writer.h"
 
 namespace qt::cli {
@@ -78,8 +80,24 @@ void draw_target(io::RgbImage& pic, double x, double y, int w, int h, TargetStat
     pic.line(x, y - 3, x, y + 3, colour);
 }
 
-bool write_picture(const std::string& path, const io::RgbImage& pic, std::string& error) {
-    return io::write_png(path, pic.width, pic.height, 3, pic.pixels, error);
+bool draw_pattern_ok(const std::string& pattern, std::string& why) {
+    std::string name;
+    if (io::numbered_file(pattern, 0, name)) return true;
+    why = "'" + pattern + "' needs one %d or %0Nd (N 1..9) for the frame number";
+    return false;
+}
+
+bool frame_picture(const std::string& pattern, uint32_t every, int k, std::string* file) {
+    return !pattern.empty() && static_cast<uint32_t>(k) % every == 0 &&
+           io::numbered_file(pattern, k, *file);
+}
+
+bool write_picture(const std::string& path, const io::RgbImage& pic, std::FILE* err,
+                   const char* who) {
+    std::string error;
+    if (io::write_png(path, pic.width, pic.height, 3, pic.pixels, error)) return true;
+    io::print_error_line(err, "%s: --draw: %s", who, error.c_str());
+    return false;
 }
 
 }  // namespace qt::cli

@@ -3,6 +3,9 @@
 // corners, a tracked board's sides solid green where detected and dashed orange where predicted,
 // a tracked target's box. Corner 0 is ringed in cyan, the others in yellow. Host only.
 #pragma once
+#include <stdint.h>
+
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -26,7 +29,24 @@ void draw_tracked(io::RgbImage& pic, const TrackedQuad& t);
 // orange when predicted or out of view, red when lost.
 void draw_target(io::RgbImage& pic, double x, double y, int w, int h, TargetState state);
 
-// Writes `pic` as a PNG; false with one line in `error` when it cannot.
-bool write_picture(const std::string& path, const io::RgbImage& pic, std::string& error);
+// --draw PATTERN of a sequence command: false with the reason in `why` unless the pattern holds
+// one %d or %0Nd for the frame number.
+bool draw_pattern_ok(const std::string& pattern, std::string& why);
+// The picture of frame k under --draw PATTERN --draw-every N, in *file; false when frame k is not
+// drawn (no pattern, or k not a multiple of N). The pattern was checked by draw_pattern_ok.
+bool frame_picture(const std::string& pattern, uint32_t every, int k, std::string* file);
+
+// `pic` written to `path` as a PNG; false after one line "WHO: --draw: ..." on `err`.
+bool write_picture(const std::string& path, const io::RgbImage& pic, std::FILE* err,
+                   const char* who);
+// The frame dimmed, draw(pic) over it, written to `path` as a PNG; false after one line
+// "WHO: --draw: ..." on `err` when it cannot be written.
+template <class Draw>
+bool write_drawn(const std::string& path, const io::GreyImage& frame, Draw&& draw, std::FILE* err,
+                 const char* who) {
+    io::RgbImage pic = io::RgbImage::from_grey(frame, 60);
+    draw(pic);
+    return write_picture(path, pic, err, who);
+}
 
 }  // namespace qt::cli

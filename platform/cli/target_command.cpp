@@ -90,19 +90,15 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
                                      status_name(s));
             return 1;
         }
-        if (!options.draw.empty() && static_cast<uint32_t>(k) % options.draw_every == 0) {
-            // The estimate in the input's pixels (binned pixel u is N·u + (N − 1)/2).
-            const TargetEstimate& e = result.estimate;
-            const double x = bin * e.x + (bin - 1) / 2.0, y = bin * e.y + (bin - 1) / 2.0;
-            std::string file;
-            io::numbered_file(options.draw, k, file);  // checked when the flags were parsed
-            io::RgbImage pic = io::RgbImage::from_grey(frame, 60);
-            draw_target(pic, x, y, options.roi_w, options.roi_h, e.state);
-            if (!write_picture(file, pic, error)) {
-                qt::io::print_error_line(err, "quadtrack target: --draw: %s", error.c_str());
-                return 1;
-            }
-        }
+        const TargetEstimate& e = result.estimate;
+        const auto box = [&](io::RgbImage& pic) {
+            draw_target(pic, input_pixel(e.x, bin), input_pixel(e.y, bin), options.roi_w,
+                        options.roi_h, e.state);
+        };
+        std::string file;
+        if (frame_picture(options.draw, options.draw_every, k, &file) &&
+            !write_drawn(file, frame, box, err, "quadtrack target"))
+            return 1;
         std::fprintf(out, "%s\n", target_json(k, result, bin).c_str());
         return io::output_written(out, err, "quadtrack target") ? 0 : 1;
     });

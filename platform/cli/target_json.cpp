@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "cli/board_runner.h"
+
 namespace qt::cli {
 
 namespace {
@@ -59,11 +61,10 @@ std::string homography_json(const FrameHomography& g, unsigned features_a, unsig
 
 std::string target_json(int frame, const TargetFrame& f, uint8_t bin) {
     const TargetEstimate& e = f.estimate;
-    // Binned pixel u is input pixel N·u + (N − 1)/2 (binning.h).
-    const double n = bin, c = (bin - 1) / 2.0;
-    return "{\"frame\":" + std::to_string(frame) + ",\"x\":" + num(n * e.x + c, "%.2f") +
-           ",\"y\":" + num(n * e.y + c, "%.2f") + ",\"state\":\"" + target_state_name(e.state) +
-           "\",\"nds\":" + num(e.nds, "%.3f") + ",\"reset\":" + (e.reset ? "true" : "false") +
+    return "{\"frame\":" + std::to_string(frame) + ",\"x\":" + num(input_pixel(e.x, bin), "%.2f") +
+           ",\"y\":" + num(input_pixel(e.y, bin), "%.2f") + ",\"state\":\"" +
+           target_state_name(e.state) + "\",\"nds\":" + num(e.nds, "%.3f") +
+           ",\"reset\":" + (e.reset ? "true" : "false") +
            ",\"matches\":" + std::to_string(f.geometry.matches) +
            ",\"inliers\":" + std::to_string(f.geometry.ransac.inliers) +
            ",\"bin\":" + std::to_string(bin) + "}";

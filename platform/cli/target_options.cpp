@@ -5,10 +5,10 @@
 #include <initializer_list>
 #include <vector>
 
+#include "cli/draw_results.h"
 #include "cli/flag_table.h"
 #include "cli/parse_number.h"
 #include "io/error_line.h"
-#include "io/image_io.h"
 
 namespace qt::cli {
 
@@ -156,11 +156,7 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
              "of view, red lost)",
              [](TargetOptions o) { return o.draw.empty() ? std::string("none") : o.draw; },
              [](const std::string& t, TargetOptions& o, std::string& e) {
-                 std::string name;
-                 if (!io::numbered_file(t, 0, name)) {
-                     e = "'" + t + "' needs one %d or %0Nd (N 1..9) for the frame number";
-                     return false;
-                 }
+                 if (!draw_pattern_ok(t, e)) return false;
                  o.draw = t;
                  return true;
              },

@@ -83,17 +83,14 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         const std::string line =
             track_json(k, result, t, score, tracker.stats().lost_reason, options.display_width,
                        options.display_height, options.track_lines);
-        if (!options.draw.empty() && static_cast<uint32_t>(k) % options.draw_every == 0) {
-            std::string file;
-            io::numbered_file(options.draw, k, file);  // checked when the flags were parsed
-            io::RgbImage pic = io::RgbImage::from_grey(frame, 60);
+        const auto tracked = [&](io::RgbImage& pic) {
             draw_lines(pic, result.lines);
             draw_tracked(pic, t);
-            if (!write_picture(file, pic, error)) {
-                qt::io::print_error_line(err, "quadtrack track: --draw: %s", error.c_str());
-                return 1;
-            }
-        }
+        };
+        std::string file;
+        if (frame_picture(options.draw, options.draw_every, k, &file) &&
+            !write_drawn(file, frame, tracked, err, "quadtrack track"))
+            return 1;
         // Written and flushed before the next frame is read: a live pipe gets each frame's
         // line as soon as the frame is in.
         std::fprintf(out, "%s\n", line.c_str());
