@@ -116,13 +116,13 @@ double corner_error(const Corners& c, const sc::Point2 truth[4], double* rms) {
 // the four sides. Read on the rendered frame, so blur, noise and lighting count.
 double weakest_contrast(const sc::PhotoBoardScene& s) {
     double weakest = 1e9;
+    const double cx = (s.corners[0].x + s.corners[2].x) / 2,
+                 cy = (s.corners[0].y + s.corners[2].y) / 2;  // inside the convex board
     for (int i = 0; i < 4; ++i) {
         const sc::Point2 a = s.corners[i], b = s.corners[(i + 1) % 4];
         const double len = std::hypot(b.x - a.x, b.y - a.y), ex = (b.x - a.x) / len,
                      ey = (b.y - a.y) / len;
         // sign: +1 when (ey, -ex) points into the board (towards its centre).
-        const double cx = (s.corners[0].x + s.corners[2].x) / 2,
-                     cy = (s.corners[0].y + s.corners[2].y) / 2;
         const double sign = (cx - a.x) * ey - (cy - a.y) * ex >= 0 ? 1 : -1;
         std::vector<double> steps;
         for (double t = 8; t <= len - 8; t += 1) {

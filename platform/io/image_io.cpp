@@ -218,12 +218,17 @@ bool read_pnm(std::FILE* f, const std::string& path, bool ppm, GreyImage& out, s
     std::vector<uint8_t> row;
     img.width = width;
     img.height = height;
+    try {
+        row.resize(row_bytes);
+    } catch (const std::bad_alloc&) {
+        return fail(error, path,
+                    "out of memory for a " + size[0].text + " x " + size[1].text + " image");
+    }
     uint64_t got = 0;
     for (int y = 0; y < height; ++y) {
         // Storage grows with the rows that arrive (the vector at most doubles), so a short file
         // declaring a huge image is refused as truncated without taking the whole image's memory.
         try {
-            row.resize(row_bytes);
             img.pixels.resize(static_cast<size_t>(y + 1) * static_cast<size_t>(width));
         } catch (const std::bad_alloc&) {
             return fail(error, path,
