@@ -205,6 +205,11 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     if (len <= 0 || len32 <= 2 * margin32 + 64) return false;
     Walk w = walk_from(a, b, len, margin32, len32 - margin32);
     const Polarity pol = polarity_of(line);
+    if (p.band.raw == 0) {  // refinement off: the evidence along the given line, no refit
+        Moments m;
+        *held = gather(edges, w, to32(p.fine_band), pol, m, steps, ends);
+        return false;
+    }
     FittedLine fit{};
     const int32_t bands[2] = {to32(p.band), to32(p.fine_band)};
     uint32_t n = 0;

@@ -25,7 +25,9 @@
 namespace qt {
 
 struct RefineParams {
-    q16_16 band = q16_16::from_ratio(5, 2);   // first pass: half width of the search, px
+    // First pass: half width of the search, px. 0: no refinement — each side stays the line
+    // the rules chose, its evidence gathered within fine_band of it (the paper's quadrangle).
+    q16_16 band = q16_16::from_ratio(5, 2);
     q16_16 fine_band = q16_16::from_int(1);   // second pass, px
     q16_16 end_margin = q16_16::from_int(3);  // skipped at each corner along the side, px
     uint8_t min_share_percent = 25;  // steps of the side that must hold a point to refit, %

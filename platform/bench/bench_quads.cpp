@@ -95,11 +95,13 @@ bool ours(const qt::io::GreyImage& img, Corners& c) {
     return detect_with(img, qt::BoardParams{}, c);
 }
 
-// The paper's five rules alone: no contrast test, no support requirement, no edge evidence, no
-// completion of a hidden side, no test of the inside, of lines across or of crossings at the
-// corners (the sides are still refined).
+// The paper's five rules alone: rule 5 without the tilt's larger factor, no contrast test, no
+// support requirement, no side refinement, no edge evidence, no completion of a hidden side, no
+// test of the inside, of lines across or of crossings at the corners.
 bool rules_only(const qt::io::GreyImage& img, Corners& c) {
     qt::BoardParams p;
+    p.quads.tilted_aspect_tolerance = p.quads.aspect_tolerance;
+    p.refine.band = qt::q16_16::from_int(0);
     p.quads.contrast = qt::Contrast::any;
     p.quads.min_side_coverage = qt::q16_16::from_int(0);
     p.quads.min_score = qt::q16_16::from_int(0);

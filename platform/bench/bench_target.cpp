@@ -36,6 +36,7 @@ struct Variant {
     uint16_t coast_fit_frames = qt::TargetTrackerParams{}.coast_fit_frames;  // 0: the filter's
     bool coast_projective = qt::TargetTrackerParams{}.coast_projective;
     bool ground_corners_only = qt::TargetPipelineParams{}.ground_corners_only;
+    qt::PairSource pairs = qt::FrameHomographyParams{}.pairs;
 };
 
 using qt::RepGate;
@@ -60,7 +61,7 @@ const Variant kVariants[] = {
      SearchRegionShape::paper},
     {"fused, morphology", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::morphological},
-    {"fused, paper coasting", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+    {"fused, velocity coast", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template, 0},
     {"fused, straight coast", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
@@ -68,6 +69,9 @@ const Variant kVariants[] = {
     {"fused, all corners", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
      qt::TargetTrackerParams{}.coast_fit_frames, true, false},
+    {"fused, corner pairs", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::PairSource::corners},
     {"paper form.", TargetMethod::fused, true, 20, 1, TargetFormulation::paper},
     {"paper form., no reset", TargetMethod::fused, false, 20, 1, TargetFormulation::paper},
 };
@@ -309,6 +313,7 @@ int main(int argc, char** argv) {
             config.tracker.coast_fit_frames = kVariants[v].coast_fit_frames;
             config.tracker.coast_projective = kVariants[v].coast_projective;
             config.ground_corners_only = kVariants[v].ground_corners_only;
+            config.geometry.pairs = kVariants[v].pairs;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {

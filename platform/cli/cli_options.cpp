@@ -278,10 +278,10 @@ const FlagTable<DetectOptions, Command>& table() {
              [](const std::string& t, DetectOptions& o, std::string& e) {
                  return parse_yes_no(t, o.params.quads.complete_hidden_side, e);
              }},
-            decimal(
-                "refine-band", "PX",
-                "side refinement: edge points within this of a side, first pass, pixels, 0.5..8",
-                0.5, 8, [](DetectOptions& o) -> q16_16& { return o.params.refine.band; }),
+            decimal("refine-band", "PX",
+                    "side refinement: edge points within this of a side, first pass, pixels, 0..8 "
+                    "(0: no refinement, the sides stay the lines the rules chose)",
+                    0, 8, [](DetectOptions& o) -> q16_16& { return o.params.refine.band; }),
             decimal("refine-fine-band", "PX",
                     "side refinement: the same, second pass, pixels, 0.5..8", 0.5, 8,
                     [](DetectOptions& o) -> q16_16& { return o.params.refine.fine_band; }),

@@ -84,7 +84,8 @@ Option either(const char* name, const char* value, const char* yes, const char* 
 // named "paper" (docs/fidelity.md).
 template <typename E>
 Option choice(const char* name, const char* help, std::initializer_list<E> values,
-              const char* (*to_name)(E), std::function<E&(TargetOptions&)> field) {
+              const char* (*to_name)(E), std::function<E&(TargetOptions&)> field,
+              GeometryCommand scope = GeometryCommand::target) {
     const std::vector<E> all(values);
     return {name,
             "NAME",
@@ -102,7 +103,7 @@ Option choice(const char* name, const char* help, std::initializer_list<E> value
                 e = "'" + t + "' is not one of " + names;
                 return false;
             },
-            GeometryCommand::target};
+            scope};
 }
 
 static_assert(kMaxRoiSide == 384 && CliTargetCapacity::max_template == 24,
@@ -202,7 +203,8 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
             choice<TargetFormulation>(
                 "formulation",
                 "where the filter lives: reference (ours: the image of the last reset frame) or "
-                "paper (the current image; unseen, x_n = A x_m, equation (11))",
+                "paper (the current image; unseen, x_n = A x_m, equation (11), with no velocity of "
+                "the target's own: --coast-fit and --coast-track do not apply)",
                 {TargetFormulation::reference, TargetFormulation::paper}, target_formulation_name,
                 [](TargetOptions& o) -> TargetFormulation& {
                     return o.config.tracker.formulation;
@@ -242,7 +244,8 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
             integer<uint16_t>(
                 "coast-fit", "FRAMES",
                 "leaving the image, the estimate coasts on the track (--coast-track) fitted to "
-                "the measurements of this many last frames, 0..63 (0: the filter's velocity)",
+                "the measurements of this many last frames, 0..63 (0: the filter's velocity; "
+                "--formulation reference only)",
                 0, TargetTracker::kMaxCoastFitFrames,
                 [](TargetOptions& o) -> uint16_t& { return o.config.tracker.coast_fit_frames; }),
             either("coast-track", "perspective|line", "perspective", "line",
@@ -254,6 +257,13 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                    "the frame homography's corners: ground (ours: not those whose patch reaches "
                    "the target's box) or all (the paper)",
                    [](TargetOptions& o) -> bool& { return o.config.ground_corners_only; }),
+            choice<PairSource>(
+                "pairs",
+                "the homography's point pairs: displacement (ours: A's corner and its patch's "
+                "Lucas-Kanade displacement into B) or corners (the paper: the two matched corners)",
+                {PairSource::displacement, PairSource::corners}, pair_source_name,
+                [](TargetOptions& o) -> PairSource& { return o.config.geometry.pairs; },
+                GeometryCommand::homography),
             integer<uint16_t>(
                 "search-radius", "PX",
                 "corner matching: candidates within this of the expected position, px, 1..128", 1,

@@ -17,6 +17,7 @@
 #include "io/image_io.h"
 #include "scene/board_scene.h"
 #include "scene/board_sequence.h"
+#include "support/barred_board_sequence.h"
 #include "support/cli_run.h"
 #include "support/json_reader.h"
 #include "support/temp_dir.h"
@@ -26,7 +27,8 @@ using qt::test::JsonReader;
 
 namespace {
 
-constexpr int kFrames = 10, kFirstHidden = 4, kLastHidden = 6;
+constexpr int kFrames = qt::test::kBarredFrames, kFirstHidden = qt::test::kFirstBarred,
+              kLastHidden = qt::test::kLastBarred;
 
 using Run = qt::test::CliRun;
 
@@ -57,34 +59,6 @@ void write(const std::filesystem::path& path, const qt::io::GreyImage& img) {
     REQUIRE(qt::io::write_pgm(path.string(), img, error));
 }
 
-// Frame f: the default board turned by (f − 5)·0.5° about its centre and moved by
-// (5f − 22, 2f − 9) px; in frames kFirstHidden..kLastHidden the demo's bars hide the top and
-// bottom sides. truth[f] gets the corners (px) in the generator's order TL, TR, BR, BL.
-std::string write_sequence(const std::filesystem::path& dir,
-                           std::vector<std::array<double, 8>>& truth) {
-    truth.clear();
-    for (int f = 0; f < kFrames; ++f) {
-        qt::scene::BoardScene s = qt::scene::turned_board(qt::scene::default_board_scene(),
-                                                          (f - 5) * 0.5, 5.0 * f - 22, 2.0 * f - 9);
-        std::array<double, 8> t{};
-        for (int i = 0; i < 4; ++i) {
-            t[2 * i] = s.corners[i].x / 256.0;
-            t[2 * i + 1] = s.corners[i].y / 256.0;
-        }
-        s.seed = 500 + static_cast<uint64_t>(f);
-        qt::io::GreyImage img = qt::scene::render_board(s);
-        if (f >= kFirstHidden && f <= kLastHidden) {
-            qt::scene::draw_bar(img, s.corners[0], s.corners[1]);  // top
-            qt::scene::draw_bar(img, s.corners[2], s.corners[3]);  // bottom
-        }
-        char name[32];
-        std::snprintf(name, sizeof name, "f%02d.pgm", f);
-        write(dir / name, img);
-        truth.push_back(t);
-    }
-    return (dir / "f%02d.pgm").string();
-}
-
 // One error: the status, exactly one line on stderr starting "quadtrack track: " and containing
 // `fragment`; `json_lines` lines on stdout before it.
 void require_error(const std::vector<std::string>& args, int status, const std::string& fragment,
@@ -105,7 +79,7 @@ void require_error(const std::vector<std::string>& args, int status, const std::
 TEST_CASE("track carries the board through frames where its top and bottom sides are hidden",
           "[cli][track]") {
     std::vector<std::array<double, 8>> truth;
-    const std::string pattern = write_sequence(temp_dir("sequence"), truth);
+    const std::string pattern = qt::test::write_barred_board_sequence(temp_dir("sequence"), truth);
     // Corner i of the JSON (anti-clockwise: TL, BL, BR, TR) is the generator's corner truth_of[i].
     const int truth_of[4] = {0, 3, 2, 1};
     for (const std::vector<std::string>& model :
@@ -176,7 +150,7 @@ TEST_CASE("track carries the board through frames where its top and bottom sides
 TEST_CASE("track prints detect's lines for each frame", "[cli][track]") {
     std::vector<std::array<double, 8>> truth;
     const auto dir = temp_dir("lines");
-    const std::string pattern = write_sequence(dir, truth);
+    const std::string pattern = qt::test::write_barred_board_sequence(dir, truth);
     const Run r = track({pattern, "--threshold=20"});
     REQUIRE(r.status == 0);
     const std::vector<Json> frames = json_lines(r.out);

@@ -131,6 +131,44 @@ TEST_CASE("refined sides put the corners on the true corners from lines a few pi
     }
 }
 
+TEST_CASE("refinement off: the corners stay where the lines cross, the evidence is along them",
+          "[refine]") {
+    const io::GreyImage img = board_frame();
+    REQUIRE(io::push_frame(g_lines, img, LineParams{}) == Status::ok);
+    // Exact lines give evidence along every side; the same lines 2 px off give almost none
+    // within fine_band (1 px), as nothing moves them onto the edges.
+    RefineParams off;
+    off.band = q16_16::from_int(0);
+    for (const double shift : {0.0, 2.0}) {
+        Segment start[4];
+        const Segment* side_lines[4];
+        for (int i = 0; i < 4; ++i) {
+            start[i] = line_near(kCorners[i], kCorners[(i + 1) % 4], shift, 0, {155, 110});
+            side_lines[i] = &start[i];
+        }
+        Quad quad{};
+        for (int i = 0; i < 4; ++i)
+            REQUIRE(intersect_lines(start[(i + 3) % 4], start[i], quad.corners[i]));
+        const Quad given = quad;
+        Segment sides[4];
+        SideEvidence evidence{};
+        INFO("lines " << shift << " px off");
+        REQUIRE(refine_quad(g_lines.edges(), side_lines, off, quad, sides, &evidence) == 0);
+        for (int i = 0; i < 4; ++i) {
+            CHECK(quad.corners[i].x == given.corners[i].x);
+            CHECK(quad.corners[i].y == given.corners[i].y);
+            CHECK(sides[i].rho == start[i].rho);
+            if (shift == 0)
+                CHECK(evidence.held[i] * 10 >= evidence.steps[i] * 9);
+            else
+                CHECK(evidence.held[i] * 10 < evidence.steps[i]);
+        }
+        // With refinement (first band 2.5 px) every side is refitted.
+        Quad refined = given;
+        CHECK(refine_quad(g_lines.edges(), side_lines, RefineParams{}, refined, sides) == 0xF);
+    }
+}
+
 TEST_CASE("a side without edges keeps its line and the evidence turns the quadrangle down",
           "[refine]") {
     const io::GreyImage img = board_frame(220);  // right of the board as bright as the board

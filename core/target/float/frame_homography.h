@@ -2,11 +2,12 @@
 // pairs, RANSAC and the refit (homography.h) give the homography from the first frame's image
 // into the second's. Used by the target pipeline and by `quadtrack homography`.
 //
-// A pair is not (corner in A, corner in B): a corner's position wobbles by a few tenths of a
-// pixel between frames (the response's maximum moves with noise and with the view), which the
-// homography would inherit. Instead a pair is (A's corner pixel, that pixel + the displacement
-// of its patch into B's), the displacement measured to sub-pixel precision by correlating the
-// two patches (match_displacement_q8).
+// By default a pair is not (corner in A, corner in B): a corner's position wobbles by a few
+// tenths of a pixel between frames (the response's maximum moves with noise and with the view),
+// which the homography would inherit. Instead a pair is (A's corner pixel, that pixel + the
+// displacement of its patch into B's), the displacement measured to sub-pixel precision by
+// correlating the two patches (match_displacement_q8). PairSource::corners gives the paper's
+// pairs, (A's sub-pixel corner, B's sub-pixel corner), for comparison.
 #pragma once
 #include <stdint.h>
 
@@ -16,9 +17,19 @@
 
 namespace qt {
 
+// What a point pair for the homography is made of (see the top of this file).
+enum class PairSource : uint8_t {
+    displacement,  // A's corner pixel and the patch displacement into B (ours, the default)
+    corners,       // the two matched corners' sub-pixel positions (filtering-geometry Table I)
+};
+inline const char* pair_source_name(PairSource p) {
+    return p == PairSource::corners ? "corners" : "displacement";
+}
+
 struct FrameHomographyParams {
     MatchParams match;
     RansacParams ransac;
+    PairSource pairs = PairSource::displacement;
 };
 
 struct FrameHomography {
@@ -92,14 +103,21 @@ FrameHomography homography_between(const FeatureSet<R, MaxFeatures>& a,
         const Feature<R>& fa = a.items[scratch.matches[i].prev];
         const Feature<R>& fb = b.items[scratch.matches[i].cur];
         if (!keep(fa)) continue;
-        int32_t dx_q8, dy_q8;
-        if (!match_displacement_q8(fa, fb, dx_q8, dy_q8)) continue;
         // 1/256 px to px: exact in float (positions below 2^15 px need 23 bits).
         constexpr float kQ8 = 1.0f / 256.0f;
-        const float ax = static_cast<float>(fa.px), ay = static_cast<float>(fa.py);
+        PointPair pair;
+        if (config.pairs == PairSource::corners) {
+            pair = PointPair{static_cast<float>(fa.x_q8) * kQ8, static_cast<float>(fa.y_q8) * kQ8,
+                             static_cast<float>(fb.x_q8) * kQ8, static_cast<float>(fb.y_q8) * kQ8};
+        } else {
+            int32_t dx_q8, dy_q8;
+            if (!match_displacement_q8(fa, fb, dx_q8, dy_q8)) continue;
+            const float ax = static_cast<float>(fa.px), ay = static_cast<float>(fa.py);
+            pair = PointPair{ax, ay, ax + static_cast<float>(dx_q8) * kQ8,
+                             ay + static_cast<float>(dy_q8) * kQ8};
+        }
         scratch.matches[out.matches] = scratch.matches[i];
-        scratch.pairs[out.matches++] = PointPair{ax, ay, ax + static_cast<float>(dx_q8) * kQ8,
-                                                 ay + static_cast<float>(dy_q8) * kQ8};
+        scratch.pairs[out.matches++] = pair;
     }
     matched();
     out.ransac = estimate_homography(scratch.pairs, out.matches, config.ransac, scratch.inlier);
