@@ -4,9 +4,10 @@
 
 namespace qt::vec {
 
-EdgeModel::EdgeModel(int max_width, uint16_t threshold)
+EdgeModel::EdgeModel(int max_width, uint16_t threshold, bool per_frame)
     : max_width_(max_width),
       cfg_threshold_(threshold),
+      per_frame_(per_frame),
       above_(static_cast<size_t>(max_width)),
       center_(static_cast<size_t>(max_width)),
       below_(static_cast<size_t>(max_width)),
@@ -55,7 +56,7 @@ void EdgeModel::push(const OutBeat& beat, std::vector<EdgeOutBeat>& out) {
         if (active_) throw std::logic_error("edge model: start of frame inside a frame");
         active_ = true;
         broken_ = false;
-        threshold_ = cfg_threshold_;
+        threshold_ = per_frame_ ? frame_threshold(cfg_threshold_, beat.word) : cfg_threshold_;
         x_ = 0;
         y_ = 0;
     } else if (!active_) {

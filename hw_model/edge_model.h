@@ -14,10 +14,19 @@
 
 namespace qt::vec {
 
+// The soak's thresholds drawn per frame (tb_front.v's +vary_threshold computes the same): a
+// frame's cfg_threshold, 1..128, is a hash of `base` and the frame's first gradient word, so the
+// bench and the model agree on it without counting frames across resets and faults.
+inline uint16_t frame_threshold(uint16_t base, uint32_t first_word) {
+    const uint32_t h = first_word * 0x9E3779B1u + base;
+    return static_cast<uint16_t>(1 + (h >> 25));
+}
+
 class EdgeModel {
 public:
-    // threshold: cfg_threshold, L1 magnitude in grey levels (read at each start of frame).
-    EdgeModel(int max_width, uint16_t threshold);
+    // threshold: cfg_threshold, L1 magnitude in grey levels (read at each start of frame);
+    // per_frame: frame_threshold(threshold, the frame's first word) instead.
+    EdgeModel(int max_width, uint16_t threshold, bool per_frame = false);
 
     // One gradient beat accepted; appends the edge beats it makes the block emit. The input must
     // be a stream the gradient block can emit (frames from tuser to eof, rows of one width up to
@@ -33,6 +42,7 @@ private:
 
     int max_width_;
     uint16_t cfg_threshold_, threshold_ = 0;
+    bool per_frame_;
     bool active_ = false, broken_ = false, sof_due_ = true;
     int width_ = 0, x_ = 0, y_ = 0;  // y_: row of the arriving words
     // Magnitudes of rows y - 2, y - 1, y (the arriving one) and the direction bins of rows
@@ -47,8 +57,8 @@ constexpr int kFrontMaxRows = 2048;
 
 class FrontModel {
 public:
-    FrontModel(int max_width, uint16_t threshold)
-        : gradient_(max_width), edges_(max_width, threshold) {}
+    FrontModel(int max_width, uint16_t threshold, bool per_frame_threshold = false)
+        : gradient_(max_width), edges_(max_width, threshold, per_frame_threshold) {}
     void push(const InBeat& beat, std::vector<OutBeat>& words, std::vector<EdgeOutBeat>& edges);
     int errors() const { return gradient_.errors(); }
 

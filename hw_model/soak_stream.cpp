@@ -238,9 +238,9 @@ bool every_kind(const SoakStream& s, int max_width) {
 }  // namespace
 
 Expected expected_outputs(const std::vector<InBeat>& in, const std::vector<size_t>& reset_before,
-                          int max_width, uint16_t threshold) {
+                          int max_width, uint16_t threshold, bool per_frame_threshold) {
     Expected e;
-    FrontModel model(max_width, threshold);
+    FrontModel model(max_width, threshold, per_frame_threshold);
     int errors_before = 0;  // errors of the models of finished segments
     size_t c = 0;
     e.out.reserve(in.size());
@@ -250,7 +250,7 @@ Expected expected_outputs(const std::vector<InBeat>& in, const std::vector<size_
             e.resets.push_back(ResetPoint{
                 static_cast<uint32_t>(i), static_cast<uint32_t>(e.out.size()),
                 static_cast<uint32_t>(e.edges.size()), static_cast<uint32_t>(errors_before)});
-            model = FrontModel(max_width, threshold);
+            model = FrontModel(max_width, threshold, per_frame_threshold);
         }
         if (i == in.size()) break;
         model.push(in[i], e.out, e.edges);
@@ -290,21 +290,23 @@ SoakStream make_soak_stream(uint64_t seed, uint64_t pixels, int max_width) {
             last_beat_error = model.errors() != before;
         }
     }
-    s.expected = expected_outputs(s.in, points, max_width, s.threshold);
+    s.expected = expected_outputs(s.in, points, max_width, s.threshold, true);
 
     // core = model on every clean frame small enough for core's list here.
     for (const CleanFrame& f : gen.clean()) {
         io::GreyImage img(f.width, f.height);
         for (int i = 0; i < f.width * f.height; ++i)
             img.pixels[static_cast<size_t>(i)] = s.in[f.first_beat + static_cast<size_t>(i)].pixel;
-        std::vector<edge_beat> core;
-        std::string why;
-        if (!core_edge_beats(img, s.threshold, core, why)) continue;
-        FrontModel model(max_width, s.threshold);
+        FrontModel model(max_width, s.threshold, true);
         std::vector<OutBeat> words;
         std::vector<EdgeOutBeat> edges;
         for (int i = 0; i < f.width * f.height; ++i)
             model.push(s.in[f.first_beat + static_cast<size_t>(i)], words, edges);
+        std::vector<edge_beat> core;
+        std::string why;
+        if (words.empty() ||
+            !core_edge_beats(img, frame_threshold(s.threshold, words.front().word), core, why))
+            continue;
         size_t i = 0;
         while (i < edges.size() && i < core.size() && edges[i].data == core[i]) ++i;
         if (i != edges.size() || i != core.size())

@@ -42,24 +42,27 @@ struct Expected {
 };
 
 // reset_before: input beat indices, non-decreasing; a reset comes before each (two equal ones:
-// two resets in a row).
+// two resets in a row). per_frame_threshold: each frame's threshold is
+// frame_threshold(threshold, its first gradient word) (edge_model.h).
 Expected expected_outputs(const std::vector<InBeat>& in, const std::vector<size_t>& reset_before,
-                          int max_width, uint16_t threshold);
+                          int max_width, uint16_t threshold, bool per_frame_threshold = false);
 
 struct SoakStream {
     std::vector<InBeat> in;
     Expected expected;
-    uint16_t threshold = 0;  // the front end's cfg_threshold for the stream
-    uint64_t pixels = 0;     // input beats inside frames (all but the stray beats)
-    int frames = 0;          // start-of-frame beats
-    int clean_frames = 0;    // frames sent whole with no fault and no reset inside
-    int core_frames = 0;     // clean frames whose edges core computed and matched the model
+    // The front end's cfg_threshold: each frame's is frame_threshold(threshold, the frame's
+    // first gradient word) (edge_model.h), set between frames as software would.
+    uint16_t threshold = 0;
+    uint64_t pixels = 0;   // input beats inside frames (all but the stray beats)
+    int frames = 0;        // start-of-frame beats
+    int clean_frames = 0;  // frames sent whole with no fault and no reset inside
+    int core_frames = 0;   // clean frames whose edges core computed and matched the model
     int faults[kSoakFaultKinds] = {};
 };
 
 // At least `pixels` input beats, and every fault kind at least once. Widths 1..max_width,
-// heights 1..64; the threshold 1..128 from the seed. Throws std::logic_error when core's edges
-// of a clean frame differ from the model's.
+// heights 1..64; the base threshold 1..128 from the seed, each frame's drawn from it. Throws
+// std::logic_error when core's edges of a clean frame differ from the model's.
 SoakStream make_soak_stream(uint64_t seed, uint64_t pixels, int max_width);
 
 }  // namespace qt::vec

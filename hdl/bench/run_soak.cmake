@@ -77,7 +77,7 @@ endif()
 set(_args +in=${PREFIX}.in.hex +out=${PREFIX}.out.hex +nin=${_in_beats} +nout=${_out_beats}
           +edges=${PREFIX}.edges.hex +nedges=${_edge_beats} +threshold=${_threshold}
           +errors=${_errors} +resets=${PREFIX}.resets.hex +nresets=${_resets}
-          +seed=${SEED} +stall=${STALL})
+          +seed=${SEED} +stall=${STALL} +vary_threshold=1 +scramble_threshold=1)
 
 # ---- fault mode: the beat to corrupt
 if(FAULT)

@@ -29,6 +29,11 @@
 //                         offers a frame's first word (when the edge stage must read it) and a
 //                         random other value in every other clock: a block that reads it at any
 //                         other time gives other edges
+//   +vary_threshold=1     (FRONT = 1) each frame's threshold is drawn from T and the frame's
+//                         first word on the gradient link: 1 + ((word * 0x9E3779B1 + T) >> 25)
+//                         (the soak generator's frame_threshold, hw_model/edge_model.h), set in
+//                         the clocks the link offers that word and held until the next frame's
+//                         (or scrambled in between, with +scramble_threshold=1)
 // cfg_height is driven from a start-of-frame beat's height field when that beat is offered and
 // held until the next one (a register, as software sets it).
 // Exit status is non-zero ($fatal) on a mismatch, a missing or extra beat, a stuck stream, a
@@ -60,7 +65,7 @@ module tb_front;
     reg [RB-1:0]      rs_mem   [0:RDEPTH-1];
     reg [8*1024-1:0]  in_file, out_file, edge_file, rs_file;
     integer           nin, nout, nedge, nerr, seed, stall, corrupt, corrupt_e, nres;
-    integer           threshold, lat_extra, trail_max, max_stalls, scramble;
+    integer           threshold, lat_extra, trail_max, max_stalls, scramble, vary;
 
     // ---------------------------------------------------------------- DUT
     reg         clk = 1'b0;
@@ -129,11 +134,18 @@ module tb_front;
     // stall and reset patterns stay those of the seed). The link's signals are registers, so the
     // value set at the falling edge holds through the rising edge that may take the word.
     reg [31:0] rng_thr = 32'h6d2b79f5;
+    reg [31:0] thr_hash;
+    reg [8:0]  frame_thr;        // the value the frame on the link must see
+    reg [8:0]  last_thr = 9'd0;  // the last frame's value (scrambling avoids it)
     always @(negedge clk) begin
-        if (scramble != 0) begin
+        thr_hash  = g_tdata * 32'h9E3779B1 + threshold;
+        frame_thr = vary != 0 ? 9'd1 + {2'b00, thr_hash[31:25]} : threshold[8:0];
+        if (g_tvalid && g_tuser[0] && (vary != 0 || scramble != 0)) begin
+            cfg_threshold <= frame_thr;
+            last_thr = frame_thr;
+        end else if (scramble != 0) begin
             rng_thr = xorshift32(rng_thr);
-            cfg_threshold <= (g_tvalid && g_tuser[0]) ? threshold[8:0] :
-                             (rng_thr[8:0] == threshold[8:0] ? ~rng_thr[8:0] : rng_thr[8:0]);
+            cfg_threshold <= rng_thr[8:0] == last_thr ? ~rng_thr[8:0] : rng_thr[8:0];
         end
     end
 
@@ -201,6 +213,7 @@ module tb_front;
         if (!$value$plusargs("trail_max=%d", trail_max)) trail_max = -1;
         if (!$value$plusargs("max_stalls=%d", max_stalls)) max_stalls = -1;
         if (!$value$plusargs("scramble_threshold=%d", scramble)) scramble = 0;
+        if (!$value$plusargs("vary_threshold=%d", vary)) vary = 0;
         nres = 0;
         if ($value$plusargs("resets=%s", rs_file)) begin
             if (!$value$plusargs("nresets=%d", nres))

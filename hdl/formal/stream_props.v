@@ -9,7 +9,12 @@
 //     after an end of frame);
 //   - end of frame (tuser[1]) only on a tlast beat;
 //   - every row of a frame ends with tlast at the same column as its first row (one tlast per
-//     row, whole rows only).
+//     row, whole rows only);
+//   - after a reset no beat is offered until an input beat has been taken (a reset forgets
+//     every pending row and flush);
+//   - the first frame after a reset, when no error is raised, ends after exactly the rows that
+//     cfg_height held when its first word was taken (the height is read once, at that word,
+//     however it changes later).
 module stream_props #(
     parameter MAX_WIDTH = 4                 // pixels per row: small, so the depth covers rows
 ) (
@@ -86,8 +91,40 @@ module stream_props #(
         end
     end
 
+    // Since the last reset: an input beat taken; the first frame's height at its first word
+    // (0: not started); rows of the first frame taken at the output; an error raised.
+    reg        s_seen  = 1'b0;
+    reg [15:0] h_first = 16'd0;
+    reg [15:0] rows_out = 16'd0;
+    reg        out_done = 1'b0, err_seen = 1'b0;
+    wire       s_take = s_tvalid & s_tready;
+    always @(posedge aclk) begin
+        if (!aresetn) begin
+            s_seen   <= 1'b0;
+            h_first  <= 16'd0;
+            rows_out <= 16'd0;
+            out_done <= 1'b0;
+            err_seen <= 1'b0;
+        end else begin
+            if (s_take) s_seen <= 1'b1;
+            if (s_take && s_tuser && h_first == 16'd0 && cfg_height != 16'd0)
+                h_first <= cfg_height;
+            if (take && m_tlast && !out_done) begin
+                rows_out <= rows_out + 16'd1;
+                if (m_tuser[1]) out_done <= 1'b1;
+            end
+            if (error) err_seen <= 1'b1;
+        end
+    end
+
     always @(posedge aclk) begin
         if (aresetn && !first && !p_rst) begin
+            // Nothing out before something came in since the reset.
+            if (!s_seen)
+                assert(!m_tvalid);
+            // The first frame's end after the rows its first word's height gave.
+            if (take && m_tuser[1] && !out_done && !err_seen && !error)
+                assert(rows_out + 16'd1 == h_first);
             // Held while stalled.
             if (q_stall)
                 assert(m_tvalid && {m_tuser, m_tlast, m_tdata} == q_beat);

@@ -20,7 +20,7 @@ import sys
 
 # Tests that check the checkers (a fault injected into the expected data or a mutant of their
 # own), not the RTL: a mutant can make them pass or fail for reasons of their own.
-CHECKER_TESTS = re.compile(r"^hdl_(fault_.*|soak_fault|formal_mutant)$")
+CHECKER_TESTS = re.compile(r"^hdl_(fault_.*|soak_fault|formal_mutant.*)$")
 
 
 def parse_catalogue(path):
