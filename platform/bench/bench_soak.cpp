@@ -9,7 +9,7 @@
 #include <string>
 
 #include "bench/soak_runs.h"
-#include "cli/parse_number.h"
+#include "host/parse_number.h"
 
 namespace {
 
@@ -48,17 +48,17 @@ int main(int argc, char** argv) {
             usage(stdout);
             return 0;
         } else if (a == "--frames" && i + 1 < argc) {
-            if (!qt::cli::parse_int(argv[++i], 1, 100000000, frames, error)) {
+            if (!qt::host::parse_int(argv[++i], 1, 100000000, frames, error)) {
                 std::fprintf(stderr, "bench_soak: --frames: %s\n", error.c_str());
                 return 2;
             }
         } else if (a == "--seeds" && i + 1 < argc) {
-            if (!qt::cli::parse_int(argv[++i], 1, 1000, seeds, error)) {
+            if (!qt::host::parse_int(argv[++i], 1, 1000, seeds, error)) {
                 std::fprintf(stderr, "bench_soak: --seeds: %s\n", error.c_str());
                 return 2;
             }
         } else if (a == "--target-frames" && i + 1 < argc) {
-            if (!qt::cli::parse_int(argv[++i], 0, 100000000, target_frames, error)) {
+            if (!qt::host::parse_int(argv[++i], 0, 100000000, target_frames, error)) {
                 std::fprintf(stderr, "bench_soak: --target-frames: %s\n", error.c_str());
                 return 2;
             }

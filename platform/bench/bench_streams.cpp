@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/board_runner.h"
 #include "demo/demo_sequence.h"
+#include "host/board_runner.h"
 #include "io/error_line.h"
 
 namespace {
@@ -31,7 +31,7 @@ struct Figures {
 
 bool measure(const Sequence& s, Camera c, qt::LineModel model, uint8_t& bin, Figures& out) {
     std::string error;
-    bin = qt::cli::choose_bin(c.width, c.height, 0, error);
+    bin = qt::host::choose_bin(c.width, c.height, 0, error);
     std::vector<qt::cli::BoardTrackFrame> frames;
     if (bin == 0 || !qt::cli::track_board_sequence(
                         s.spec, c.width, c.height,

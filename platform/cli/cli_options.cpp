@@ -5,10 +5,10 @@
 #include <functional>
 #include <vector>
 
-#include "cli/board_runner.h"
-#include "cli/draw_results.h"
 #include "cli/flag_table.h"
-#include "cli/parse_number.h"
+#include "host/board_runner.h"
+#include "host/draw_results.h"
+#include "host/parse_number.h"
 #include "io/error_line.h"
 #include "tracking/quad_tracker.h"
 
@@ -27,7 +27,7 @@ Option track_only(Option o) {
 // A decimal number into q16_16 (rounded to nearest 2^-16) within [lo, hi].
 bool parse_q16(const std::string& text, double lo, double hi, q16_16& out, std::string& error) {
     double v = 0;
-    if (!parse_double(text, lo, hi, v, error)) return false;
+    if (!host::parse_double(text, lo, hi, v, error)) return false;
     out = q16_16::from_raw(std::llround(v * 65536.0));
     return true;
 }
@@ -116,7 +116,7 @@ const FlagTable<DetectOptions, Command>& table() {
              [](DetectOptions o) { return std::to_string(o.params.lines.hough.rho_step); },
              [](const std::string& t, DetectOptions& o, std::string& e) {
                  long v = 0;
-                 if (!parse_int(t, 2, 4, v, e)) return false;
+                 if (!host::parse_int(t, 2, 4, v, e)) return false;
                  if (v == 3) {
                      e = "3 is not 2 or 4";
                      return false;
@@ -262,8 +262,8 @@ const FlagTable<DetectOptions, Command>& table() {
                      e = "'" + t + "' is not WxH";
                      return false;
                  }
-                 if (!parse_int(t.substr(0, x), 1, 4096, w, e) ||
-                     !parse_int(t.substr(x + 1), 1, 4096, h, e))
+                 if (!host::parse_int(t.substr(0, x), 1, 4096, w, e) ||
+                     !host::parse_int(t.substr(x + 1), 1, 4096, h, e))
                      return false;
                  o.display_width = static_cast<uint16_t>(w);
                  o.display_height = static_cast<uint16_t>(h);
@@ -335,7 +335,7 @@ const FlagTable<DetectOptions, Command>& table() {
                     "edge points this close to a side are not counted inside, pixels, 0..16", 0, 16,
                     [](DetectOptions& o) -> q16_16& { return o.params.refine.inside_margin; }),
             integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1,
-                              HostBoardDetector::max_quads(),
+                              host::HostBoardDetector::max_quads(),
                               [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
             bin_flag<DetectOptions, Command>(
                 [](DetectOptions& o) -> uint8_t& { return o.bin; }, Command::detect,
@@ -344,13 +344,14 @@ const FlagTable<DetectOptions, Command>& table() {
              "the detector build: vga = qt::Vga, frames up to 640 x 480 (the CLI's own); qvga = "
              "qt::Qvga, frames up to 320 x 240, the capacities of the firmware and the C API, "
              "so the same frame gives their results (larger frames binned to fit either way)",
-             [](DetectOptions o) { return std::string(capacity_name(o.capacity)); },
+             [](DetectOptions o) { return std::string(host::capacity_name(o.capacity)); },
              [](const std::string& t, DetectOptions& o, std::string& e) {
                  if (t != "vga" && t != "qvga") {
                      e = "expected vga or qvga, got '" + t + "'";
                      return false;
                  }
-                 o.capacity = t == "qvga" ? DetectorCapacity::qvga : DetectorCapacity::vga;
+                 o.capacity =
+                     t == "qvga" ? host::DetectorCapacity::qvga : host::DetectorCapacity::vga;
                  return true;
              },
              Command::detect},
@@ -466,7 +467,8 @@ int parse_command_line(const std::vector<std::string>& args, Command command,
     }
     // --draw is a file for detect, a pattern for track: checked once the command is known.
     std::string why;
-    if (command == Command::track && !options.draw.empty() && !draw_pattern_ok(options.draw, why)) {
+    if (command == Command::track && !options.draw.empty() &&
+        !host::draw_pattern_ok(options.draw, why)) {
         qt::io::print_error_line(err, "quadtrack track: --draw: %s", why.c_str());
         return 2;
     }

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/board_runner.h"
+#include "host/board_runner.h"
 #include "quads/board_detector.h"
 #include "tracking/line_tracker.h"
 
@@ -35,8 +35,9 @@ struct DetectOptions {
     uint16_t max_quads = 4;                               // quadrangles reported, 1..4
     uint8_t bin = 0;  // binning factor of frames over the capacity's size, 1..16; 0: the smallest
                       // that fits
-    DetectorCapacity capacity = DetectorCapacity::vga;  // the detector build the frames run on
-    TrackOptions track;                                 // track only
+    host::DetectorCapacity capacity =
+        host::DetectorCapacity::vga;  // the detector build the frames run on
+    TrackOptions track;               // track only
     // --draw: detect, a PNG file; track, a pattern with one %d or %0Nd (a PNG per frame drawn,
     // numbered by frame). Empty: nothing drawn. draw_every: track draws frames 0, N, 2N, ...
     std::string draw;

@@ -1,9 +1,9 @@
 #include "cli/detect_command.h"
 
-#include "cli/board_runner.h"
 #include "cli/cli_options.h"
 #include "cli/detect_json.h"
-#include "cli/draw_results.h"
+#include "host/board_runner.h"
+#include "host/draw_results.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
 #include "io/write_check.h"
@@ -15,7 +15,7 @@ std::string detect_usage() {
            "  IMAGE is a PGM (P5), PPM (P6, converted to grey) or Y4M file (first frame's Y "
            "plane),\n"
            "  or - for standard input. A frame larger than " +
-           std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
+           std::to_string(host::kMaxFrameWidth) + " x " + std::to_string(host::kMaxFrameHeight) +
            " pixels (320 x 240 with --capacity qvga) is binned to fit (--bin).\n"
            "  Prints one JSON object on stdout (see docs/cli.md).\n"
            "options (--name VALUE or --name=VALUE):\n" +
@@ -23,8 +23,8 @@ std::string detect_usage() {
 }
 
 bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, uint8_t bin,
-                  DetectResult& result, std::string& error) {
-    if (!detect_board(frame, options.params, result, bin, options.capacity)) {
+                  host::DetectResult& result, std::string& error) {
+    if (!host::detect_board(frame, options.params, result, bin, options.capacity)) {
         error = status_name(result.status);
         return false;
     }
@@ -45,18 +45,20 @@ int run_detect(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         return 1;
     }
     const std::string name = io::input_name(path);
-    const uint8_t bin = choose_bin(frame.width, frame.height, options.bin, error, options.capacity);
-    DetectResult result;
+    const uint8_t bin =
+        host::choose_bin(frame.width, frame.height, options.bin, error, options.capacity);
+    host::DetectResult result;
     if (bin == 0 || !detect_frame(frame, options, bin, result, error)) {
         qt::io::print_error_line(err, "quadtrack detect: %s: %s", name.c_str(), error.c_str());
         return 1;
     }
-    to_input_pixels(result, frame.width, frame.height);
+    host::to_input_pixels(result, frame.width, frame.height);
     const auto found = [&](io::RgbImage& pic) {
-        draw_lines(pic, result.lines);
-        draw_quads(pic, result.quads);
+        host::draw_lines(pic, result.lines);
+        host::draw_quads(pic, result.quads);
     };
-    if (!options.draw.empty() && !write_drawn(options.draw, frame, found, err, "quadtrack detect"))
+    if (!options.draw.empty() &&
+        !host::write_drawn(options.draw, frame, found, err, "quadtrack detect"))
         return 1;
     std::fprintf(out, "%s\n",
                  detect_json(result, options.display_width, options.display_height).c_str());

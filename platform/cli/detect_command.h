@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/board_runner.h"
 #include "cli/cli_options.h"
+#include "host/board_runner.h"
 
 namespace qt::cli {
 
@@ -14,7 +14,7 @@ namespace qt::cli {
 // result in the binned frame's pixels (to_input_pixels() maps it back). On failure returns false
 // with a one-line reason (no command prefix) in `error`.
 bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, uint8_t bin,
-                  DetectResult& result, std::string& error);
+                  host::DetectResult& result, std::string& error);
 
 // args: everything after "detect". Writes the JSON (one line) to `out`, one error line to
 // `err`. Returns the exit status: 0 ok, 1 bad input file or frame, 2 bad command line.

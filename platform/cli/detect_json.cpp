@@ -42,7 +42,7 @@ void homography(std::string& out, const Point16 (&corners)[4], uint16_t w, uint1
 
 // "width":W,"height":H,"bin":N,"status":"...","full":[...] (no braces). "full" names each
 // capacity or work budget that filled (status capacity_exceeded exactly when one did).
-void frame_fields(std::string& out, const DetectResult& r) {
+void frame_fields(std::string& out, const host::DetectResult& r) {
     out += "\"width\":" + std::to_string(r.width) + ",\"height\":" + std::to_string(r.height) +
            ",\"bin\":" + std::to_string(r.bin) + ",\"status\":\"" +
            (r.status == Status::ok ? "ok" : "capacity_exceeded") + "\",\"full\":[";
@@ -67,7 +67,7 @@ void frame_fields(std::string& out, const DetectResult& r) {
 }
 
 // [{"x1":..,...,"theta_deg":..}, ...]
-void lines_array(std::string& out, const DetectResult& r) {
+void lines_array(std::string& out, const host::DetectResult& r) {
     out += "[";
     for (size_t i = 0; i < r.lines.size(); ++i) {
         const Segment& s = r.lines[i];
@@ -102,7 +102,8 @@ void corners_array(std::string& out, const Point16 (&corners)[4]) {
 
 }  // namespace
 
-std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t display_height) {
+std::string detect_json(const host::DetectResult& r, uint16_t display_width,
+                        uint16_t display_height) {
     std::string out = "{";
     frame_fields(out, r);
     out += ",\"lines\":";
@@ -122,7 +123,7 @@ std::string detect_json(const DetectResult& r, uint16_t display_width, uint16_t 
     return out;
 }
 
-std::string track_json(int frame, const DetectResult& r, const TrackedQuad& t, q16_16 score,
+std::string track_json(int frame, const host::DetectResult& r, const TrackedQuad& t, q16_16 score,
                        QuadTrackLost lost_reason, uint16_t display_width, uint16_t display_height,
                        bool with_lines) {
     const bool has_quad = t.state != TrackState::none;

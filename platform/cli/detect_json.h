@@ -27,18 +27,18 @@
 #pragma once
 #include <string>
 
-#include "cli/board_runner.h"
+#include "host/board_runner.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
 
-std::string detect_json(const DetectResult& result, uint16_t display_width,
+std::string detect_json(const host::DetectResult& result, uint16_t display_width,
                         uint16_t display_height);
 
 // score: the tracked board's evidence share this frame (evidence_share); lost_reason:
 // QuadTracker::stats().lost_reason; with_lines: false leaves "lines" out.
-std::string track_json(int frame, const DetectResult& result, const TrackedQuad& quad, q16_16 score,
-                       QuadTrackLost lost_reason, uint16_t display_width, uint16_t display_height,
-                       bool with_lines = true);
+std::string track_json(int frame, const host::DetectResult& result, const TrackedQuad& quad,
+                       q16_16 score, QuadTrackLost lost_reason, uint16_t display_width,
+                       uint16_t display_height, bool with_lines = true);
 
 }  // namespace qt::cli

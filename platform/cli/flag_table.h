@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/parse_number.h"
+#include "host/parse_number.h"
 #include "io/error_line.h"
 #include "io/write_check.h"
 
@@ -121,7 +121,7 @@ Flag<Options, Command> integer_flag(const char* name, const char* value, const c
             [field](Options o) { return std::to_string(field(o)); },
             [field, lo, hi](const std::string& t, Options& o, std::string& e) {
                 long v = 0;
-                if (!parse_int(t, lo, hi, v, e)) return false;
+                if (!host::parse_int(t, lo, hi, v, e)) return false;
                 field(o) = static_cast<T>(v);
                 return true;
             },
@@ -148,7 +148,7 @@ Flag<Options, Command> bin_flag(std::function<uint8_t&(Options&)> field, Command
                     return true;
                 }
                 long v = 0;
-                if (!parse_int(t, 1, 16, v, e)) return false;
+                if (!host::parse_int(t, 1, 16, v, e)) return false;
                 field(o) = static_cast<uint8_t>(v);
                 return true;
             },

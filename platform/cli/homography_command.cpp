@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <memory>
 
-#include "cli/board_runner.h"
 #include "cli/target_json.h"
+#include "host/board_runner.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
 #include "io/push_frame.h"
@@ -36,7 +36,7 @@ bool corners_of(const std::string& path, const HarrisParams& config, uint8_t req
                 Detector& detector, Features& out, uint8_t& bin, std::string& error) {
     io::GreyImage image;
     if (!io::read_image(path, image, error)) return false;
-    bin = choose_bin(image.width, image.height, requested, error);
+    bin = host::choose_bin(image.width, image.height, requested, error);
     if (bin == 0) {
         error = io::input_name(path) + ": " + error;
         return false;

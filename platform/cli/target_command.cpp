@@ -3,10 +3,10 @@
 #include <memory>
 
 #include "base/floor_div.h"
-#include "cli/board_runner.h"
-#include "cli/draw_results.h"
-#include "cli/frame_loop.h"
 #include "cli/target_json.h"
+#include "host/board_runner.h"
+#include "host/draw_results.h"
+#include "host/frame_loop.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
 #include "io/push_frame.h"
@@ -39,10 +39,10 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
     auto pipeline = std::make_unique<CliTargetPipeline>();  // ~120 KB: heap, not stack
     auto binning = std::make_unique<BinningStage<640>>();
     uint8_t bin = 1;
-    return for_each_frame(spec, "target", err, [&](int k, const io::GreyImage& frame) {
+    return host::for_each_frame(spec, "target", err, [&](int k, const io::GreyImage& frame) {
         std::string error;
         if (k == 0) {
-            bin = choose_bin(frame.width, frame.height, options.bin, error);
+            bin = host::choose_bin(frame.width, frame.height, options.bin, error);
             if (bin == 0) {
                 qt::io::print_error_line(err, "quadtrack target: %s: %s", name.c_str(),
                                          error.c_str());
@@ -92,12 +92,12 @@ int run_target(const std::vector<std::string>& args, std::FILE* out, std::FILE* 
         }
         const TargetEstimate& e = result.estimate;
         const auto box = [&](io::RgbImage& pic) {
-            draw_target(pic, input_pixel(e.x, bin), input_pixel(e.y, bin), options.roi_w,
-                        options.roi_h, e.state);
+            host::draw_target(pic, host::input_pixel(e.x, bin), host::input_pixel(e.y, bin),
+                              options.roi_w, options.roi_h, e.state);
         };
         std::string file;
-        if (frame_picture(options.draw, options.draw_every, k, &file) &&
-            !write_drawn(file, frame, box, err, "quadtrack target"))
+        if (host::frame_picture(options.draw, options.draw_every, k, &file) &&
+            !host::write_drawn(file, frame, box, err, "quadtrack target"))
             return 1;
         std::fprintf(out, "%s\n", target_json(k, result, bin).c_str());
         return io::output_written(out, err, "quadtrack target") ? 0 : 1;

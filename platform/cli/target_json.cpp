@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "cli/board_runner.h"
+#include "host/board_runner.h"
 
 namespace qt::cli {
 
@@ -61,8 +61,9 @@ std::string homography_json(const FrameHomography& g, unsigned features_a, unsig
 
 std::string target_json(int frame, const TargetFrame& f, uint8_t bin) {
     const TargetEstimate& e = f.estimate;
-    return "{\"frame\":" + std::to_string(frame) + ",\"x\":" + num(input_pixel(e.x, bin), "%.2f") +
-           ",\"y\":" + num(input_pixel(e.y, bin), "%.2f") + ",\"state\":\"" +
+    return "{\"frame\":" + std::to_string(frame) +
+           ",\"x\":" + num(host::input_pixel(e.x, bin), "%.2f") +
+           ",\"y\":" + num(host::input_pixel(e.y, bin), "%.2f") + ",\"state\":\"" +
            target_state_name(e.state) + "\",\"nds\":" + num(e.nds, "%.3f") +
            ",\"reset\":" + (e.reset ? "true" : "false") +
            ",\"matches\":" + std::to_string(f.geometry.matches) +

@@ -5,9 +5,9 @@
 #include <initializer_list>
 #include <vector>
 
-#include "cli/draw_results.h"
 #include "cli/flag_table.h"
-#include "cli/parse_number.h"
+#include "host/draw_results.h"
+#include "host/parse_number.h"
 #include "io/error_line.h"
 
 namespace qt::cli {
@@ -32,7 +32,7 @@ Option real(const char* name, const char* value, const char* help, double lo, do
             [field](TargetOptions o) { return show_float(field(o)); },
             [field, lo, hi](const std::string& t, TargetOptions& o, std::string& e) {
                 double v = 0;
-                if (!parse_double(t, lo, hi, v, e)) return false;
+                if (!host::parse_double(t, lo, hi, v, e)) return false;
                 field(o) = static_cast<float>(v);
                 return true;
             },
@@ -55,7 +55,7 @@ Option score_q15(const char* name, const char* help,
             [field](TargetOptions o) { return show_float(field(o) / 32768.0); },
             [field](const std::string& t, TargetOptions& o, std::string& e) {
                 double v = 0;
-                if (!parse_double(t, -1.0, 1.0, v, e)) return false;
+                if (!host::parse_double(t, -1.0, 1.0, v, e)) return false;
                 field(o) = static_cast<int16_t>(std::lround(std::fmin(v * 32768.0, 32767.0)));
                 return true;
             },
@@ -123,7 +123,7 @@ bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
         // binned by up to 16.
         const long lo = i < 2 ? -100000 : 1, hi = i < 2 ? 100000 : long{kMaxRoiSide} * 16;
         std::string why;
-        if (!parse_int(t.substr(start, comma - start), lo, hi, n, why)) {
+        if (!host::parse_int(t.substr(start, comma - start), lo, hi, n, why)) {
             e = std::string(i < 2 ? "position " : "size ") + why;
             return false;
         }
@@ -157,7 +157,7 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
              "of view, red lost)",
              [](TargetOptions o) { return o.draw.empty() ? std::string("none") : o.draw; },
              [](const std::string& t, TargetOptions& o, std::string& e) {
-                 if (!draw_pattern_ok(t, e)) return false;
+                 if (!host::draw_pattern_ok(t, e)) return false;
                  o.draw = t;
                  return true;
              },

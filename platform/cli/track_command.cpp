@@ -2,8 +2,8 @@
 
 #include "cli/detect_command.h"
 #include "cli/detect_json.h"
-#include "cli/draw_results.h"
-#include "cli/frame_loop.h"
+#include "host/draw_results.h"
+#include "host/frame_loop.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
 #include "io/write_check.h"
@@ -18,7 +18,7 @@ std::string track_usage() {
            "  PGM/PPM file, or - for standard input (a Y4M stream, or PGM/PPM images one after\n"
            "  another: each frame's line is written as soon as the frame has been read). Every\n"
            "  frame the same size; frames larger than " +
-           std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight) +
+           std::to_string(host::kMaxFrameWidth) + " x " + std::to_string(host::kMaxFrameHeight) +
            " pixels (320 x 240 with --capacity qvga) are binned to fit (--bin).\n"
            "  Each frame is detected as by quadtrack detect, then the quadrangle tracker carries "
            "the\n"
@@ -54,12 +54,12 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
     const std::string name = io::input_name(spec);
     QuadTracker tracker;
     uint8_t bin = 1;
-    return for_each_frame(spec, "track", err, [&](int k, const io::GreyImage& frame) {
+    return host::for_each_frame(spec, "track", err, [&](int k, const io::GreyImage& frame) {
         std::string error;
         if (k == 0) {
             // Every frame has frame 0's size: one bin factor, and the tracker works in the
             // binned frame's pixels.
-            bin = choose_bin(frame.width, frame.height, options.bin, error, options.capacity);
+            bin = host::choose_bin(frame.width, frame.height, options.bin, error, options.capacity);
             if (bin == 0) {
                 qt::io::print_error_line(err, "quadtrack track: %s: %s", name.c_str(),
                                          error.c_str());
@@ -68,7 +68,7 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
             tracker.set_params(tracker_params(options, static_cast<uint16_t>(frame.width / bin),
                                               static_cast<uint16_t>(frame.height / bin)));
         }
-        DetectResult result;
+        host::DetectResult result;
         if (!detect_frame(frame, options, bin, result, error)) {
             qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", name.c_str(), k,
                                      error.c_str());
@@ -77,19 +77,19 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
         TrackedQuad t =
             tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
                          result.quads.data(), static_cast<uint16_t>(result.quads.size()));
-        const q16_16 score = evidence_share(t, options.params.refine, options.capacity);
-        to_input_pixels(result, frame.width, frame.height);
-        to_input_pixels(t, bin);
+        const q16_16 score = host::evidence_share(t, options.params.refine, options.capacity);
+        host::to_input_pixels(result, frame.width, frame.height);
+        host::to_input_pixels(t, bin);
         const std::string line =
             track_json(k, result, t, score, tracker.stats().lost_reason, options.display_width,
                        options.display_height, options.track_lines);
         const auto tracked = [&](io::RgbImage& pic) {
-            draw_lines(pic, result.lines);
-            draw_tracked(pic, t);
+            host::draw_lines(pic, result.lines);
+            host::draw_tracked(pic, t);
         };
         std::string file;
-        if (frame_picture(options.draw, options.draw_every, k, &file) &&
-            !write_drawn(file, frame, tracked, err, "quadtrack track"))
+        if (host::frame_picture(options.draw, options.draw_every, k, &file) &&
+            !host::write_drawn(file, frame, tracked, err, "quadtrack track"))
             return 1;
         // Written and flushed before the next frame is read: a live pipe gets each frame's
         // line as soon as the frame is in.

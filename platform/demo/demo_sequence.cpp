@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cli/board_runner.h"
-#include "cli/draw_results.h"
+#include "host/board_runner.h"
+#include "host/draw_results.h"
 #include "io/error_line.h"
 #include "io/overlay.h"
 #include "io/png_writer.h"
@@ -53,21 +53,21 @@ bool track_board_sequence(const scene::BoardMotionSpec& spec, int width, int hei
                           const QuadTrackerParams& params, std::vector<BoardTrackFrame>& out,
                           std::string& error) {
     out.clear();
-    const uint8_t bin = choose_bin(width, height, 0, error);
+    const uint8_t bin = host::choose_bin(width, height, 0, error);
     if (bin == 0) return false;
     QuadTracker tracker(params);
     for (int f = 0; f < spec.frames; ++f) {
         const scene::BoardSequenceFrame d = scene::sized_sequence_frame(spec, f, width, height);
-        DetectResult r;
-        if (!detect_board(d.image, BoardParams{}, r, bin)) {
+        host::DetectResult r;
+        if (!host::detect_board(d.image, BoardParams{}, r, bin)) {
             error = "frame " + std::to_string(f) + ": " + status_name(r.status);
             return false;
         }
         BoardTrackFrame k;
         k.quad = tracker.step(r.lines.data(), static_cast<uint16_t>(r.lines.size()), r.quads.data(),
                               static_cast<uint16_t>(r.quads.size()));
-        to_input_pixels(r, width, height);
-        to_input_pixels(k.quad, bin);
+        host::to_input_pixels(r, width, height);
+        host::to_input_pixels(k.quad, bin);
         k.lost = tracker.stats().lost_reason;
         k.taken_back = tracker.stats().taken_back;
         if (k.quad.state != TrackState::none)
@@ -111,7 +111,7 @@ bool run_demo_sequence(const std::string& out_dir) {
         const TrackedQuad& t = tf.quad;
         const TrackedQuad& p = pf.quad;
         io::RgbImage pic = io::RgbImage::from_grey(d.image, 60);
-        draw_lines(pic, tf.lines);
+        host::draw_lines(pic, tf.lines);
         // The truth, as the scene generator placed it: in its order TL, TR, BR, BL.
         for (const auto& c : sc.corners) pic.ring(c.x / 256.0, c.y / 256.0, 1, {255, 0, 255});
         char name[32];
@@ -121,7 +121,7 @@ bool run_demo_sequence(const std::string& out_dir) {
         if (t.state == TrackState::none) {
             std::printf("no quadrangle");
         } else {
-            draw_tracked(pic, t);
+            host::draw_tracked(pic, t);
             char sides[8];
             side_letters(t, tf.taken_back, sides);
             std::printf(

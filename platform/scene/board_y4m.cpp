@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string>
 
-#include "cli/parse_number.h"
+#include "host/parse_number.h"
 #include "io/error_line.h"
 #include "io/image_io.h"
 #include "scene/board_sequence.h"
@@ -51,8 +51,8 @@ int main(int argc, char** argv) {
         if (a == "--size") {
             const size_t x = v.find('x');
             long w = 0, h = 0;
-            if (x == std::string::npos || !qt::cli::parse_int(v.substr(0, x), 64, 16384, w, why) ||
-                !qt::cli::parse_int(v.substr(x + 1), 48, 16384, h, why))
+            if (x == std::string::npos || !qt::host::parse_int(v.substr(0, x), 64, 16384, w, why) ||
+                !qt::host::parse_int(v.substr(x + 1), 48, 16384, h, why))
                 return usage_error("--size: '" + v + "' is not WxH (64x48 .. 16384x16384)");
             width = static_cast<int>(w);
             height = static_cast<int>(h);
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
             else
                 return usage_error("--sequence: '" + v + "' is not demo or turning");
         } else if (a == "--frames") {
-            if (!qt::cli::parse_int(v, 1, 1000, n, why)) return usage_error("--frames: " + why);
+            if (!qt::host::parse_int(v, 1, 1000, n, why)) return usage_error("--frames: " + why);
             frames = static_cast<int>(n);
         } else if (a == "--colour") {
             if (v != "mono" && v != "420")
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         } else if (a == "--truth") {
             truth_path = v;
         } else if (a == "--cut") {
-            if (!qt::cli::parse_int(v, 0, 1000000000, n, why)) return usage_error("--cut: " + why);
+            if (!qt::host::parse_int(v, 0, 1000000000, n, why)) return usage_error("--cut: " + why);
             cut = n;
         } else {
             return usage_error("unknown option '" + a + "'");

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "cli/board_runner.h"
 #include "cli/target_json.h"
+#include "host/board_runner.h"
 #include "support/json_reader.h"
 
 using qt::test::Json;
@@ -72,12 +72,12 @@ TEST_CASE("a binned line's rho and theta in the input's pixels", "[cli][binning]
     s.y2 = qt::q16_16::from_int(20);
     s.rho = qt::q16_16::from_int(5);
     s.theta = qt::angle_from_deg(0);
-    const qt::Segment v = qt::cli::to_input_pixels(s, 2);
+    const qt::Segment v = qt::host::to_input_pixels(s, 2);
     CHECK(v.rho.raw == qt::q16_16::from_ratio(21, 2).raw);
     CHECK(v.theta == s.theta);
     CHECK(v.x1.raw == qt::q16_16::from_ratio(21, 2).raw);
     CHECK(v.y2.raw == qt::q16_16::from_ratio(81, 2).raw);  // 2·20 + 0.5
     // The line u = 0 by 3 lies at x = 1: rho 0 becomes 1.
     s.x1 = s.x2 = s.rho = qt::q16_16::from_int(0);
-    CHECK(qt::cli::to_input_pixels(s, 3).rho.raw == qt::q16_16::from_int(1).raw);
+    CHECK(qt::host::to_input_pixels(s, 3).rho.raw == qt::q16_16::from_int(1).raw);
 }

@@ -12,7 +12,7 @@
 #include "quads/board_detector.h"
 #include "tracking/quad_tracker.h"
 
-namespace qt::cli {
+namespace qt::host {
 
 // The CLI's detectors: the VGA build (frames up to 640 × 480, the default) and the QVGA build
 // (320 × 240: what firmware built with qt::Qvga finds in the same frame); larger frames are
@@ -68,4 +68,4 @@ Segment to_input_pixels(const Segment& s, uint8_t bin);
 void to_input_pixels(DetectResult& result, int input_width, int input_height);
 void to_input_pixels(TrackedQuad& quad, uint8_t bin);
 
-}  // namespace qt::cli
+}  // namespace qt::host

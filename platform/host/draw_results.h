@@ -15,7 +15,7 @@
 #include "target/float/target_tracker.h"
 #include "tracking/quad_tracker.h"
 
-namespace qt::cli {
+namespace qt::host {
 
 // A 2 px wide line from a to b (pixels); dashed: 8 px on, 6 px off.
 void side_line(io::RgbImage& pic, Point16 a, Point16 b, io::Rgb colour, bool dashed);
@@ -49,4 +49,4 @@ bool write_drawn(const std::string& path, const io::GreyImage& frame, Draw&& dra
     return write_picture(path, pic, err, who);
 }
 
-}  // namespace qt::cli
+}  // namespace qt::host

@@ -1,9 +1,9 @@
-#include "cli/board_runner.h"
+#include "host/board_runner.h"
 
 #include "gradient/binning.h"
 #include "io/push_frame.h"
 
-namespace qt::cli {
+namespace qt::host {
 
 const char* capacity_name(DetectorCapacity c) {
     return c == DetectorCapacity::qvga ? "qvga" : "vga";
@@ -163,4 +163,4 @@ void to_input_pixels(TrackedQuad& t, uint8_t bin) {
     for (Segment& s : t.sides) s = to_input_pixels(s, bin);
 }
 
-}  // namespace qt::cli
+}  // namespace qt::host

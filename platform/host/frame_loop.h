@@ -7,7 +7,7 @@
 
 #include "io/grey_image.h"
 
-namespace qt::cli {
+namespace qt::host {
 
 // Calls body(k, frame) for frames k = 0, 1, ... of `spec` (image_io.h's FrameSource; "-" is
 // standard input), each frame read only after body has returned for the one before. Returns 0
@@ -20,4 +20,4 @@ namespace qt::cli {
 int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
                    const std::function<int(int, const io::GreyImage&)>& body);
 
-}  // namespace qt::cli
+}  // namespace qt::host

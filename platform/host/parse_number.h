@@ -2,7 +2,7 @@
 #pragma once
 #include <string>
 
-namespace qt::cli {
+namespace qt::host {
 
 // A decimal integer in [lo, hi]; false with `error` set ("'x' is not an integer",
 // "7 is out of range 1..5") otherwise.
@@ -11,4 +11,4 @@ bool parse_int(const std::string& text, long lo, long hi, long& out, std::string
 // A finite decimal number in [lo, hi]; false with `error` set otherwise.
 bool parse_double(const std::string& text, double lo, double hi, double& out, std::string& error);
 
-}  // namespace qt::cli
+}  // namespace qt::host

@@ -1,4 +1,4 @@
-#include "cli/frame_loop.h"
+#include "host/frame_loop.h"
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 #include "io/error_line.h"
 #include "io/image_io.h"
 
-namespace qt::cli {
+namespace qt::host {
 
 namespace {
 
@@ -84,4 +84,4 @@ int for_each_frame(const std::string& spec, const char* command, std::FILE* err,
     }
 }
 
-}  // namespace qt::cli
+}  // namespace qt::host

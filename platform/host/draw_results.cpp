@@ -1,4 +1,4 @@
-#include "cli/draw_results.h"
+#include "host/draw_results.h"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 #include "io/image_io.h"
 #include "io/png_writer.h"
 
-namespace qt::cli {
+namespace qt::host {
 
 namespace {
 
@@ -100,4 +100,4 @@ bool write_picture(const std::string& path, const io::RgbImage& pic, std::FILE* 
     return false;
 }
 
-}  // namespace qt::cli
+}  // namespace qt::host

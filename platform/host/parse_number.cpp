@@ -1,11 +1,11 @@
-#include "cli/parse_number.h"
+#include "host/parse_number.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-namespace qt::cli {
+namespace qt::host {
 
 bool parse_int(const std::string& text, long lo, long hi, long& out, std::string& error) {
     errno = 0;
@@ -41,4 +41,4 @@ bool parse_double(const std::string& text, double lo, double hi, double& out, st
     return true;
 }
 
-}  // namespace qt::cli
+}  // namespace qt::host
