@@ -493,123 +493,149 @@ private:
         }
     }
 
+    // One follow() under way: the track, the fit's moments about the seed (sx32, sy32), the
+    // fitted points per gradient direction bin (the polarity), each way's last hit (end32: x32
+    // and y32 of the segment's end; last_major: the hit's major coordinate, px), the refits so
+    // far, the steps taken against steps_left (a frame's budget), and the seed's own run.
+    struct Following {
+        Track tr;
+        int32_t sx32, sy32;
+        Moments m;
+        uint16_t dir_count[16] = {};
+        int32_t end32[2][2];
+        int32_t last_major[2];
+        uint32_t refits = 0;
+        uint32_t steps = 0, steps_left;
+        SeedRun seed_run;
+        Following(int32_t x32, int32_t y32, uint32_t budget)
+            : sx32(x32), sy32(y32), steps_left(budget), seed_run(x32, y32) {
+            end32[0][0] = end32[1][0] = x32;
+            end32[0][1] = end32[1][1] = y32;
+        }
+    };
+
     // Follows the line of θ bin `t` through seed point `seed`; true with the segment when it
     // is long enough (its points are then consumed and their votes withdrawn).
     bool follow(uint16_t seed, uint32_t t, Segment& out) {
         const edge_point sp = edges_[seed];
-        const int32_t sx32 = ep::x32(sp), sy32 = ep::y32(sp);
-        Track tr{};
+        Following f(ep::x32(sp), ep::y32(sp), p_.max_walk_steps - stats_.walk_steps);
         // Normal (cos θ, sin θ); the line runs along (−sin θ, cos θ).
         const int32_t c = cos_of(ws_.cos_sin_q14[t]), s = sin_of(ws_.cos_sin_q14[t]);
-        tr.major_is_y = (c < 0 ? -c : c) > (s < 0 ? -s : s);
-        tr.normal_axis = ((t * 16u / p_.theta_bins) + 1u) / 2u & 7u;  // round(θ / 22.5°) mod 8
-        tr.anchor_major32 = major_of(tr, sx32, sy32);
-        tr.anchor_minor32 = minor_of(tr, sx32, sy32);
-        set_direction(tr, -s, c);
-
+        f.tr.major_is_y = (c < 0 ? -c : c) > (s < 0 ? -s : s);
+        f.tr.normal_axis = ((t * 16u / p_.theta_bins) + 1u) / 2u & 7u;  // round(θ / 22.5°) mod 8
+        f.tr.anchor_major32 = major_of(f.tr, f.sx32, f.sy32);
+        f.tr.anchor_minor32 = minor_of(f.tr, f.sx32, f.sy32);
+        set_direction(f.tr, -s, c);
         held_count_ = 0;
         held_complete_ = true;
         hold(seed);
-        Moments m;
-        m.add(0, 0);
-        uint16_t dir_count[16] = {};  // fitted points per gradient direction bin (polarity)
-        ++dir_count[ep::dir(sp)];
-        int32_t end32[2][2] = {{sx32, sy32}, {sx32, sy32}};  // last hit each way: x32, y32
-        const int32_t extent = tr.major_is_y ? height_ : width_;
-        const int32_t seed_major =
-            major_of(tr, static_cast<int32_t>(ep::x(sp)), static_cast<int32_t>(ep::y(sp)));
-        int32_t last_major[2] = {seed_major, seed_major};  // of the last hit each way, pixels
-        uint32_t refits = 0, refits_in_way0 = 0;
-        // The walk's budget, counted here and added to the stats when the walk ends (a local
-        // the compiler keeps in a register).
-        const uint32_t steps_left = p_.max_walk_steps - stats_.walk_steps;
-        uint32_t steps = 0;
-        SeedRun seed_run(sx32, sy32);
+        f.m.add(0, 0);
+        ++f.dir_count[ep::dir(sp)];
+        f.last_major[0] = f.last_major[1] =
+            major_of(f.tr, static_cast<int32_t>(ep::x(sp)), static_cast<int32_t>(ep::y(sp)));
         // Way 0, way 1, then way 0 again: way 0 starts along the seed bin's direction, which
         // may be a few degrees off (a bin of 2° that noise helped to the top), and until the
         // 8th point's refit it can leave the line after a few pixels. When it ended before any
         // refit and way 1 refitted, way 0 goes on from its last hit along the refitted line.
+        uint32_t refits_in_way0 = 0;
         for (int pass = 0; pass < 3; ++pass) {
-            const int way = pass & 1;
-            if (pass == 1) refits_in_way0 = refits;
+            if (pass == 1) refits_in_way0 = f.refits;
             if (pass == 2) {
-                if (refits_in_way0 > 0 || refits == 0) break;
-                refit(tr, m, sx32, sy32);
+                if (refits_in_way0 > 0 || f.refits == 0) break;
+                refit(f.tr, f.m, f.sx32, f.sy32);
             }
-            const int32_t step = way == 0 ? 1 : -1;
-            tr.forward = way == 0;
-            seed_run.begin[pass] = seed_run.end[pass] = held_count_;
-            int32_t gap = 0;
-            int32_t run = 0, run_gap = 0;  // hits of the run not yet in the segment, its gap
-            int32_t run32[2] = {0, 0};     // that run's last hit, x32 and y32
-            for (int32_t major = last_major[way] + step; major >= 0 && major < extent;
-                 major += step) {
-                if (steps == steps_left) {
-                    stats_.walk_steps += steps;
-                    stats_.budget_exhausted = true;
-                    return false;
-                }
-                ++steps;
-                const int32_t i = corridor_points(tr, major, predict(tr, major), [&](uint16_t f) {
-                    hold(f);
-                    const edge_point fp = edges_[f];
-                    if (dir_count[ep::dir(fp)] < 0xFFFFu) ++dir_count[ep::dir(fp)];
-                    if (!fitted_to(tr, fp)) return;
-                    m.add(ep::x32(fp) - sx32, ep::y32(fp) - sy32);
-                    // Refit at 8, 16, 32, ... points: the direction settles quickly, and each
-                    // fit costs two CORDIC runs.
-                    if (m.n >= 8 && (m.n & (m.n - 1)) == 0) {
-                        refit(tr, m, sx32, sy32);
-                        ++refits;
-                    }
-                });
-                if (i < 0) {
-                    if (++gap > p_.max_line_gap) break;
-                    continue;
-                }
-                last_major[way] = major;
-                const edge_point hp = edges_[static_cast<uint16_t>(i)];
-                // A run of hits after a gap of g >= 2 px becomes part of the segment once it
-                // has g hits or a later run follows it: a noise pixel or two beyond a corner
-                // would otherwise carry the end up to max_line_gap past it.
-                const int32_t here[2] = {ep::x32(hp), ep::y32(hp)};
-                if (seed_run.open[way]) {
-                    if (gap < 2) {
-                        ++seed_run.columns;
-                        memcpy(seed_run.end32[way], here, sizeof here);
-                        seed_run.end[pass] = held_count_;
-                    } else {  // the first hit past a gap of 2 px or more
-                        seed_run.open[way] = false;
-                        seed_run.gap[way] = gap;
-                        memcpy(seed_run.beyond32[way], here, sizeof here);
-                    }
-                }
-                if (gap >= 2) {
-                    if (run > 0) memcpy(end32[way], run32, sizeof run32);
-                    run = 1;
-                    run_gap = gap;
-                } else if (run > 0) {
-                    ++run;
-                }
-                memcpy(run > 0 ? run32 : end32[way], here, sizeof here);
-                if (run > 0 && run >= run_gap) {
-                    memcpy(end32[way], run32, sizeof run32);
-                    run = 0;
-                }
-                gap = 0;
+            if (!walk(f, pass)) {
+                stats_.walk_steps += f.steps;
+                stats_.budget_exhausted = true;
+                return false;
             }
         }
-        stats_.walk_steps += steps;
-        drop_lone_seed_run(seed_run, tr, seed, end32, m, dir_count);
+        stats_.walk_steps += f.steps;
+        drop_lone_seed_run(f.seed_run, f.tr, seed, f.end32, f.m, f.dir_count);
+        return keep_segment(f, out);
+    }
+
+    // One pass of follow(): along way pass & 1 from that way's last hit until a gap longer than
+    // max_line_gap or the frame's edge. Hits join the fit (refitted at 8, 16, 32, ... points);
+    // a run of hits after a gap of g >= 2 px becomes part of the segment once it has g hits or
+    // a later run follows it: a noise pixel or two beyond a corner would otherwise carry the end
+    // up to max_line_gap past it. False when the frame's step budget ran out.
+    bool walk(Following& f, int pass) {
+        const int way = pass & 1;
+        const int32_t step = way == 0 ? 1 : -1;
+        const int32_t extent = f.tr.major_is_y ? height_ : width_;
+        f.tr.forward = way == 0;
+        f.seed_run.begin[pass] = f.seed_run.end[pass] = held_count_;
+        int32_t gap = 0;
+        int32_t run = 0, run_gap = 0;  // hits of the run not yet in the segment, its gap
+        int32_t run32[2] = {0, 0};     // that run's last hit, x32 and y32
+        for (int32_t major = f.last_major[way] + step; major >= 0 && major < extent;
+             major += step) {
+            if (f.steps == f.steps_left) return false;
+            ++f.steps;
+            const int32_t i = corridor_points(f.tr, major, predict(f.tr, major), [&](uint16_t k) {
+                hold(k);
+                const edge_point fp = edges_[k];
+                if (f.dir_count[ep::dir(fp)] < 0xFFFFu) ++f.dir_count[ep::dir(fp)];
+                if (!fitted_to(f.tr, fp)) return;
+                f.m.add(ep::x32(fp) - f.sx32, ep::y32(fp) - f.sy32);
+                // Refit at 8, 16, 32, ... points: the direction settles quickly, and each
+                // fit costs two CORDIC runs.
+                if (f.m.n >= 8 && (f.m.n & (f.m.n - 1)) == 0) {
+                    refit(f.tr, f.m, f.sx32, f.sy32);
+                    ++f.refits;
+                }
+            });
+            if (i < 0) {
+                if (++gap > p_.max_line_gap) break;
+                continue;
+            }
+            f.last_major[way] = major;
+            const edge_point hp = edges_[static_cast<uint16_t>(i)];
+            const int32_t here[2] = {ep::x32(hp), ep::y32(hp)};
+            SeedRun& sr = f.seed_run;
+            if (sr.open[way]) {
+                if (gap < 2) {
+                    ++sr.columns;
+                    memcpy(sr.end32[way], here, sizeof here);
+                    sr.end[pass] = held_count_;
+                } else {  // the first hit past a gap of 2 px or more
+                    sr.open[way] = false;
+                    sr.gap[way] = gap;
+                    memcpy(sr.beyond32[way], here, sizeof here);
+                }
+            }
+            if (gap >= 2) {
+                if (run > 0) memcpy(f.end32[way], run32, sizeof run32);
+                run = 1;
+                run_gap = gap;
+            } else if (run > 0) {
+                ++run;
+            }
+            memcpy(run > 0 ? run32 : f.end32[way], here, sizeof here);
+            if (run > 0 && run >= run_gap) {
+                memcpy(f.end32[way], run32, sizeof run32);
+                run = 0;
+            }
+            gap = 0;
+        }
+        return true;
+    }
+
+    // The end of follow(): the final fit between the two ends, kept when long enough and
+    // carried by enough points; its points are then consumed.
+    bool keep_segment(Following& f, Segment& out) {
+        const Track& tr = f.tr;
+        int32_t(&end32)[2][2] = f.end32;
         // Too few points, or a run too short along its major axis (the line is at most √5 times
         // longer, |slope| <= 2): rejected before the final fit.
         const int32_t major_extent =
             (major_of(tr, end32[0][0], end32[0][1]) - major_of(tr, end32[1][0], end32[1][1])) / 32;
-        if (m.n < p_.threshold || (major_extent < 0 ? -major_extent : major_extent) * 9 <
-                                      4 * static_cast<int32_t>(p_.min_line_length))
+        if (f.m.n < p_.threshold || (major_extent < 0 ? -major_extent : major_extent) * 9 <
+                                        4 * static_cast<int32_t>(p_.min_line_length))
             return false;
         FittedLine line;
-        const bool fitted = fit_line(m, sx32, sy32, line);
+        const bool fitted = fit_line(f.m, f.sx32, f.sy32, line);
         q16_16 t1 = along(line, q16_16::from_raw(int64_t{end32[1][0]} * 2048),
                           q16_16::from_raw(int64_t{end32[1][1]} * 2048));
         q16_16 t2 = along(line, q16_16::from_raw(int64_t{end32[0][0]} * 2048),
@@ -623,19 +649,19 @@ private:
         // an earlier segment with a few new ones is that segment again, not a new line.
         if (static_cast<int64_t>(t2.raw) - t1.raw < static_cast<int64_t>(p_.min_line_length)
                                                         << 16 ||
-            m.n < p_.threshold)
+            f.m.n < p_.threshold)
             return false;
 
         // Consume every point in the corridor of the final line between the two ends.
-        if (fitted) aim(tr, line);
+        if (fitted) aim(f.tr, line);
         const int32_t a = (major_of(tr, end32[1][0], end32[1][1]) + 16) >> 5;
         const int32_t b = (major_of(tr, end32[0][0], end32[0][1]) + 16) >> 5;
         if (held_complete_)
             consume_held(tr, a < b ? a : b, a < b ? b : a);
         else
             consume_corridor(tr, a < b ? a : b, a < b ? b : a);
-        out = make_segment(line, t1, t2, static_cast<uint16_t>(m.n > 65535 ? 65535 : m.n));
-        out.bright_side = bright_side(out.theta, dir_count);
+        out = make_segment(line, t1, t2, static_cast<uint16_t>(f.m.n > 65535 ? 65535 : f.m.n));
+        out.bright_side = bright_side(out.theta, f.dir_count);
         return true;
     }
 
