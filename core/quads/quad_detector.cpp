@@ -286,29 +286,9 @@ bool perpendicular_to_pair(const Segment* lines, uint8_t c, LinePair p, const Qu
            rule_perpendicular(lines[c].theta, lines[p.b].theta, params);
 }
 
-}  // namespace
-
-Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity,
-                    QuadLine* geometry, Quad* out, uint16_t capacity, uint16_t* count,
-                    QuadStats* stats, Segment* completed) {
-    *count = 0;
-    *stats = QuadStats{};
-    if (n >= kCompletedSide || width == 0 || height == 0) return Status::bad_size;
-
-    // Parallel pairs (rule 1) whose lines are at least half the shortest side apart (a side
-    // meets its parallel pair at more than 90° − perpendicular_tolerance, so it is at most
-    // ~1/sin(55°) times their separation; half is a safe prefilter, rule 4 decides later) and
-    // face each other with the contrast asked for (the contrast test, early: in texture half
-    // the parallel lines or more look away from each other).
-    // Rule 4's shortest side by default a tenth of the frame height: the board is held at a
-    // working distance, smaller bright quadrangles are other things.
-    const QuadParams rules = sized_quad_params(params, height);
-    uint16_t npairs = 0;
-    const int64_t min_sep = rules.min_side_length.raw / 2, max_sep = rules.max_side_length.raw;
-    // Lines come strongest first (clustering seeds clusters by points): every pair of lines
-    // 0..j is formed before any pair with line j + 1, so a full pair capacity drops the pairs
-    // of the weakest lines.
+// Each line's normal, and which of the first 32 lines lie along it (the support rule counts
+// their segments).
+void line_geometry(const Segment* lines, uint16_t n, const QuadParams& rules, QuadLine* geometry) {
     for (uint16_t i = 0; i < n; ++i) geometry[i].normal = sin_cos(lines[i].theta);
     for (uint16_t i = 0; i < n; ++i) {
         uint32_t along = 0;
@@ -317,6 +297,20 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
                 along |= uint32_t{1} << j;
         geometry[i].collinear = along;
     }
+}
+
+// Parallel pairs (rule 1) whose lines are at least half the shortest side apart (a side meets
+// its parallel pair at more than 90° − perpendicular_tolerance, so it is at most ~1/sin(55°)
+// times their separation; half is a safe prefilter, rule 4 decides later) and face each other
+// with the contrast asked for (the contrast test, early: in texture half the parallel lines or
+// more look away from each other). Lines come strongest first (clustering seeds clusters by
+// points): every pair of lines 0..j is formed before any pair with line j + 1, so a full pair
+// capacity drops the pairs of the weakest lines. Returns the pairs written.
+uint16_t parallel_pairs(const Segment* lines, uint16_t n, const QuadLine* geometry,
+                        const QuadParams& rules, LinePair* pairs, uint16_t pair_capacity,
+                        QuadStats* stats) {
+    uint16_t npairs = 0;
+    const int64_t min_sep = rules.min_side_length.raw / 2, max_sep = rules.max_side_length.raw;
     for (uint16_t j = 1; j < n; ++j) {
         for (uint16_t i = 0; i < j; ++i) {
             if (!rule_parallel(lines[i].theta, lines[j].theta, rules)) continue;
@@ -331,15 +325,20 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             pairs[npairs++] = {static_cast<uint8_t>(i), static_cast<uint8_t>(j)};
         }
     }
-    stats->parallel_pairs = npairs;
+    return npairs;
+}
 
-    Candidates candidates(lines, geometry, n, width, height, rules, out, completed, capacity, count,
-                          stats);
-    auto side = [&](Sides& s, int k, uint8_t line) {
-        s.line[k] = &lines[line];
-        s.normal[k] = geometry[line].normal;
-        s.id[k] = line;
-    };
+void set_side(Sides& s, int k, const Segment* lines, const QuadLine* geometry, uint8_t line) {
+    s.line[k] = &lines[line];
+    s.normal[k] = geometry[line].normal;
+    s.id[k] = line;
+}
+
+// Two parallel pairs, each line of one almost perpendicular to both of the other (rule 2) and
+// facing them: four sides, handed to the candidates.
+void pairs_of_pairs(const Segment* lines, const QuadLine* geometry, const LinePair* pairs,
+                    uint16_t npairs, const QuadParams& rules, Candidates& candidates,
+                    QuadStats* stats) {
     for (uint16_t i = 0; i < npairs; ++i) {
         for (uint16_t j = static_cast<uint16_t>(i + 1); j < npairs; ++j) {
             const LinePair p = pairs[i], q = pairs[j];
@@ -366,22 +365,22 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
             }
             // Going round: p.a ∩ q.a, q.a ∩ p.b, p.b ∩ q.b, q.b ∩ p.a.
             Sides s;
-            side(s, 0, q.a);
-            side(s, 1, p.b);
-            side(s, 2, q.b);
-            side(s, 3, p.a);
+            set_side(s, 0, lines, geometry, q.a);
+            set_side(s, 1, lines, geometry, p.b);
+            set_side(s, 2, lines, geometry, q.b);
+            set_side(s, 3, lines, geometry, p.a);
             candidates.consider(s);
         }
     }
-    if (completed == nullptr || !rules.complete_hidden_side) {
-        stats->quads = *count;
-        return stats->pairs_dropped > 0 ? Status::capacity_exceeded : Status::ok;
-    }
+}
 
-    // Completion: a side hidden along most of its length (an arm across it) but whose corners
-    // show: the two sides next to it run up to those corners. For a parallel pair (a, b) and a
-    // line c almost perpendicular to both, the fourth side joins the ends of a and b farther
-    // from c, on the same side of c.
+// Completion: a side hidden along most of its length (an arm across it) but whose corners
+// show: the two sides next to it run up to those corners. For a parallel pair (a, b) and a
+// line c almost perpendicular to both, the fourth side joins the ends of a and b farther from
+// c, on the same side of c.
+void complete_hidden_sides(const Segment* lines, uint16_t n, const QuadLine* geometry,
+                           const LinePair* pairs, uint16_t npairs, const QuadParams& rules,
+                           Candidates& candidates, QuadStats* stats) {
     for (uint16_t i = 0; i < npairs; ++i) {
         const LinePair p = pairs[i];
         for (uint16_t c = 0; c < n; ++c) {
@@ -417,15 +416,37 @@ Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t h
                                      ? static_cast<int8_t>(-inside)
                                      : int8_t{0};
             Sides s;
-            side(s, 0, static_cast<uint8_t>(c));
-            side(s, 1, p.b);
+            set_side(s, 0, lines, geometry, static_cast<uint8_t>(c));
+            set_side(s, 1, lines, geometry, p.b);
             s.line[2] = &hidden;
             s.normal[2] = nh;
             s.id[2] = kCompletedSide;
-            side(s, 3, p.a);
+            set_side(s, 3, lines, geometry, p.a);
             candidates.consider(s);
         }
     }
+}
+
+}  // namespace
+
+Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
+                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity,
+                    QuadLine* geometry, Quad* out, uint16_t capacity, uint16_t* count,
+                    QuadStats* stats, Segment* completed) {
+    *count = 0;
+    *stats = QuadStats{};
+    if (n >= kCompletedSide || width == 0 || height == 0) return Status::bad_size;
+    // Rule 4's shortest side by default a tenth of the frame height: the board is held at a
+    // working distance, smaller bright quadrangles are other things.
+    const QuadParams rules = sized_quad_params(params, height);
+    line_geometry(lines, n, rules, geometry);
+    const uint16_t npairs = parallel_pairs(lines, n, geometry, rules, pairs, pair_capacity, stats);
+    stats->parallel_pairs = npairs;
+    Candidates candidates(lines, geometry, n, width, height, rules, out, completed, capacity, count,
+                          stats);
+    pairs_of_pairs(lines, geometry, pairs, npairs, rules, candidates, stats);
+    if (completed != nullptr && rules.complete_hidden_side)
+        complete_hidden_sides(lines, n, geometry, pairs, npairs, rules, candidates, stats);
     stats->quads = *count;
     return stats->pairs_dropped > 0 ? Status::capacity_exceeded : Status::ok;
 }
