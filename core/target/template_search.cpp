@@ -40,6 +40,125 @@ bool vertex_2d_q8(const int32_t s[3][3], int32_t* dx, int32_t* dy) {
     return true;
 }
 
+// The template over the region, for every candidate top-left corner (u, v).
+struct Search {
+    const uint8_t* tpl;
+    uint8_t tw, th;
+    const PixelRegion& region;
+    NccSums t;               // the template's Σa and Σa², the same at every candidate
+    int32_t u0, u1, v0, v1;  // candidates' top-left corners, inclusive
+
+    // The score of the template with its top-left corner at (u, v), Q15.
+    int32_t score(int32_t u, int32_t v) const {
+        const uint8_t* at = region.pixels + static_cast<uint32_t>(v - region.y0) * region.stride +
+                            static_cast<uint32_t>(u - region.x0);
+        NccSums s = t;
+        for (uint8_t y = 0; y < th; ++y)
+            ncc_add_row<false>(tpl + uint32_t{y} * tw, at + uint32_t{y} * region.stride, tw, s);
+        return static_cast<int32_t>(ncc_from_sums(s).q15);
+    }
+};
+
+// The best score so far and where; ties go to the first candidate in row-major order, whatever
+// order they are scored in.
+struct Best {
+    int32_t score = INT32_MIN, u = 0, v = 0;
+    uint32_t positions = 0;  // candidates scored or ruled out
+    void consider(int32_t s, int32_t cu, int32_t cv) {
+        ++positions;
+        if (s > score || (s == score && (cv < v || (cv == v && cu < u)))) {
+            score = s;
+            u = cu;
+            v = cv;
+        }
+    }
+};
+
+// The candidates' columns [u0, u1 + tw) in strips of at most kStrip: Σb and Σb² of each
+// placement from sums over its columns (each column's th pixels, slid down a row per row of
+// placements), so that a placement costs only its Σab (one multiply-add a pixel). The NccSums
+// are those Search::score() adds up pixel by pixel: the same scores, the same best.
+constexpr int32_t kStrip = 64;
+
+void scan_strips(const Search& q, Best& best) {
+    const uint8_t tw = q.tw, th = q.th;
+    uint32_t col_sum[kStrip], col_sq[kStrip];
+    for (int32_t s0 = q.u0; s0 <= q.u1; s0 += kStrip - tw + 1) {
+        const int32_t s1 = q.u1 < s0 + kStrip - tw ? q.u1 : s0 + kStrip - tw;  // last placement
+        const int32_t cols = s1 - s0 + tw;
+        const uint8_t* left = q.region.pixels + static_cast<uint32_t>(s0 - q.region.x0);
+        auto row_at = [&](int32_t r) {
+            return left + static_cast<uint32_t>(r - q.region.y0) * q.region.stride;
+        };
+        auto add_row = [&](int32_t r) {
+            const uint8_t* in = row_at(r);
+            for (int32_t c = 0; c < cols; ++c) {
+                col_sum[c] += in[c];
+                col_sq[c] += uint32_t{in[c]} * in[c];
+            }
+        };
+        // The columns hold rows [v0, v0 + th − 1) before the first row of placements; each
+        // row v of placements adds row v + th − 1 and (after the first) removes row v − 1.
+        for (int32_t c = 0; c < cols; ++c) col_sum[c] = col_sq[c] = 0;
+        for (int32_t r = q.v0; r < q.v0 + th - 1; ++r) add_row(r);
+        for (int32_t v = q.v0; v <= q.v1; ++v) {
+            add_row(v + th - 1);
+            if (v > q.v0) {
+                const uint8_t* out = row_at(v - 1);
+                for (int32_t c = 0; c < cols; ++c) {
+                    col_sum[c] -= out[c];
+                    col_sq[c] -= uint32_t{out[c]} * out[c];
+                }
+            }
+            uint32_t box_sum = 0, box_sq = 0;
+            for (int32_t c = 0; c < tw - 1; ++c) {
+                box_sum += col_sum[c];
+                box_sq += col_sq[c];
+            }
+            const uint8_t* at0 = row_at(v);
+            for (int32_t u = s0; u <= s1; ++u) {
+                const int32_t c = u - s0;
+                box_sum += col_sum[c + tw - 1];
+                box_sq += col_sq[c + tw - 1];
+                NccSums s = q.t;
+                s.sb = box_sum;
+                s.sbb = box_sq;
+                s.sab = dot_block(q.tpl, tw, th, at0 + static_cast<uint32_t>(c), q.region.stride);
+                box_sum -= col_sum[c];
+                box_sq -= col_sq[c];
+                // A score certainly below the best cannot beat it (a tie could: it may come
+                // earlier in row-major order); its root and division are spared.
+                if (ncc_certainly_below(s, best.score))
+                    ++best.positions;
+                else
+                    best.consider(ncc_from_sums(s).q15, u, v);
+            }
+        }
+    }
+}
+
+// Sub-pixel offset of the best, 1/256 px: one Newton step on the 3 × 3 scores about it when
+// they are all candidates and make a maximum (a peak elongated across the axes moves both
+// coordinates, which parabolas along the best row and column miss); else a parabola along each
+// axis with both neighbours (0 without).
+void subpixel_q8(const Search& q, const Best& best, int32_t* dx, int32_t* dy) {
+    const bool inside_x = (best.u > q.u0) && (best.u < q.u1);
+    const bool inside_y = (best.v > q.v0) && (best.v < q.v1);
+    // The scores about the best that are candidates, s3[y + 1][x + 1]: each scored once.
+    int32_t s3[3][3] = {};
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            const bool need = (i == 1 || inside_x) && (j == 1 || inside_y);
+            if (i == 1 && j == 1)
+                s3[j][i] = best.score;
+            else if (need)
+                s3[j][i] = q.score(best.u + i - 1, best.v + j - 1);
+        }
+    if (inside_x && inside_y && vertex_2d_q8(s3, dx, dy)) return;
+    *dx = inside_x ? vertex_q8(s3[1][0], best.score, s3[1][2]) : 0;
+    *dy = inside_y ? vertex_q8(s3[0][1], best.score, s3[2][1]) : 0;
+}
+
 }  // namespace
 
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
@@ -50,127 +169,34 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     // Top-left corners whose centre (u + (tw − 1)/2, v + (th − 1)/2) is within ±radius of
     // (cx, cy), and whose template lies in the region.
     const int32_t uc = cx - (tw - 1) / 2, vc = cy - (th - 1) / 2;
-    int32_t u0 = uc - radius, u1 = uc + radius, v0 = vc - radius, v1 = vc + radius;
-    if (u0 < region.x0) u0 = region.x0;
-    if (v0 < region.y0) v0 = region.y0;
-    if (u1 > region.x0 + region.w - tw) u1 = region.x0 + region.w - tw;
-    if (v1 > region.y0 + region.h - th) v1 = region.y0 + region.h - th;
-    // The template's Σa and Σa² are the same at every candidate: summed once here, so each
-    // candidate costs only Σb, Σb² and Σab (3 multiply-adds a pixel instead of 5).
-    NccSums t;
-    t.n = uint32_t{tw} * th;
-    for (uint32_t i = 0; i < t.n; ++i) {
-        t.sa += tpl[i];
-        t.saa += uint32_t{tpl[i]} * tpl[i];
+    Search q{tpl, tw, th, region, NccSums{}, uc - radius, uc + radius, vc - radius, vc + radius};
+    if (q.u0 < region.x0) q.u0 = region.x0;
+    if (q.v0 < region.y0) q.v0 = region.y0;
+    if (q.u1 > region.x0 + region.w - tw) q.u1 = region.x0 + region.w - tw;
+    if (q.v1 > region.y0 + region.h - th) q.v1 = region.y0 + region.h - th;
+    // The template's Σa and Σa², summed once: each candidate then costs only Σb, Σb² and Σab
+    // (3 multiply-adds a pixel instead of 5).
+    q.t.n = uint32_t{tw} * th;
+    for (uint32_t i = 0; i < q.t.n; ++i) {
+        q.t.sa += tpl[i];
+        q.t.saa += uint32_t{tpl[i]} * tpl[i];
     }
-    auto score = [&](int32_t u, int32_t v) {
-        const uint8_t* at = region.pixels + static_cast<uint32_t>(v - region.y0) * region.stride +
-                            static_cast<uint32_t>(u - region.x0);
-        NccSums s = t;
-        for (uint8_t y = 0; y < th; ++y)
-            ncc_add_row<false>(tpl + uint32_t{y} * tw, at + uint32_t{y} * region.stride, tw, s);
-        return static_cast<int32_t>(ncc_from_sums(s).q15);
-    };
-    if (u0 > u1 || v0 > v1) return hit;  // no candidate lies in the region
-    int32_t best = INT32_MIN, bu = 0, bv = 0;
-    // Ties go to the first candidate in row-major order, whatever order they are scored in.
-    auto consider = [&](int32_t s, int32_t u, int32_t v) {
-        ++hit.positions;
-        if (s > best || (s == best && (v < bv || (v == bv && u < bu)))) {
-            best = s;
-            bu = u;
-            bv = v;
-        }
-    };
-    // The candidates' columns [u0, u1 + tw) in strips of at most kStrip: Σb and Σb² of each
-    // placement from sums over its columns (each column's th pixels, slid down a row per row
-    // of placements), so that a placement costs only its Σab (one multiply-add a pixel). The
-    // NccSums are those score() adds up pixel by pixel: the same scores, the same best.
+    if (q.u0 > q.u1 || q.v0 > q.v1) return hit;  // no candidate lies in the region
+    Best best;
     // A template wider than half a strip (a few rows of many columns) is scored as it is.
-    constexpr int32_t kStrip = 64;
     if (tw > kStrip / 2) {
-        for (int32_t v = v0; v <= v1; ++v)
-            for (int32_t u = u0; u <= u1; ++u) consider(score(u, v), u, v);
+        for (int32_t v = q.v0; v <= q.v1; ++v)
+            for (int32_t u = q.u0; u <= q.u1; ++u) best.consider(q.score(u, v), u, v);
     } else {
-        uint32_t col_sum[kStrip], col_sq[kStrip];
-        for (int32_t s0 = u0; s0 <= u1; s0 += kStrip - tw + 1) {
-            const int32_t s1 = u1 < s0 + kStrip - tw ? u1 : s0 + kStrip - tw;  // last placement
-            const int32_t cols = s1 - s0 + tw;
-            const uint8_t* left = region.pixels + static_cast<uint32_t>(s0 - region.x0);
-            auto row_at = [&](int32_t r) {
-                return left + static_cast<uint32_t>(r - region.y0) * region.stride;
-            };
-            auto add_row = [&](int32_t r) {
-                const uint8_t* in = row_at(r);
-                for (int32_t c = 0; c < cols; ++c) {
-                    col_sum[c] += in[c];
-                    col_sq[c] += uint32_t{in[c]} * in[c];
-                }
-            };
-            // The columns hold rows [v0, v0 + th − 1) before the first row of placements; each
-            // row v of placements adds row v + th − 1 and (after the first) removes row v − 1.
-            for (int32_t c = 0; c < cols; ++c) col_sum[c] = col_sq[c] = 0;
-            for (int32_t r = v0; r < v0 + th - 1; ++r) add_row(r);
-            for (int32_t v = v0; v <= v1; ++v) {
-                add_row(v + th - 1);
-                if (v > v0) {
-                    const uint8_t* out = row_at(v - 1);
-                    for (int32_t c = 0; c < cols; ++c) {
-                        col_sum[c] -= out[c];
-                        col_sq[c] -= uint32_t{out[c]} * out[c];
-                    }
-                }
-                uint32_t box_sum = 0, box_sq = 0;
-                for (int32_t c = 0; c < tw - 1; ++c) {
-                    box_sum += col_sum[c];
-                    box_sq += col_sq[c];
-                }
-                const uint8_t* at0 = row_at(v);
-                for (int32_t u = s0; u <= s1; ++u) {
-                    const int32_t c = u - s0;
-                    box_sum += col_sum[c + tw - 1];
-                    box_sq += col_sq[c + tw - 1];
-                    NccSums s = t;
-                    s.sb = box_sum;
-                    s.sbb = box_sq;
-                    s.sab = dot_block(tpl, tw, th, at0 + static_cast<uint32_t>(c), region.stride);
-                    box_sum -= col_sum[c];
-                    box_sq -= col_sq[c];
-                    // A score certainly below the best cannot beat it (a tie could: it may
-                    // come earlier in row-major order); its root and division are spared.
-                    if (ncc_certainly_below(s, best))
-                        ++hit.positions;
-                    else
-                        consider(ncc_from_sums(s).q15, u, v);
-                }
-            }
-        }
+        scan_strips(q, best);
     }
+    hit.positions = best.positions;
     hit.found = true;
-    hit.score_q15 = static_cast<int16_t>(best);
-    // Sub-pixel: one Newton step on the 3 × 3 scores about the best when they are all
-    // candidates and make a maximum (a peak elongated across the axes moves both coordinates,
-    // which parabolas along the best row and column miss); else a parabola along each axis
-    // with both neighbours (0 without).
-    const bool inside_x = (bu > u0) && (bu < u1);
-    const bool inside_y = (bv > v0) && (bv < v1);
-    // The scores about the best that are candidates, s3[y + 1][x + 1]: each scored once.
-    int32_t s3[3][3] = {};
-    for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) {
-            const bool need = (i == 1 || inside_x) && (j == 1 || inside_y);
-            if (i == 1 && j == 1)
-                s3[j][i] = best;
-            else if (need)
-                s3[j][i] = score(bu + i - 1, bv + j - 1);
-        }
+    hit.score_q15 = static_cast<int16_t>(best.score);
     int32_t dx = 0, dy = 0;
-    if (!(inside_x && inside_y && vertex_2d_q8(s3, &dx, &dy))) {
-        dx = inside_x ? vertex_q8(s3[1][0], best, s3[1][2]) : 0;
-        dy = inside_y ? vertex_q8(s3[0][1], best, s3[2][1]) : 0;
-    }
-    hit.x_q8 = bu * 256 + (tw - 1) * 128 + dx;
-    hit.y_q8 = bv * 256 + (th - 1) * 128 + dy;
+    subpixel_q8(q, best, &dx, &dy);
+    hit.x_q8 = best.u * 256 + (tw - 1) * 128 + dx;
+    hit.y_q8 = best.v * 256 + (th - 1) * 128 + dy;
     return hit;
 }
 
