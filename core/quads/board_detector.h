@@ -84,65 +84,8 @@ public:
             for (uint16_t j = 0; j < kept && !seen; ++j)
                 seen = same_corners(quads_[j], quad, params_.refine.duplicate_distance);
             if (seen) continue;
-            const Segment* side_lines[4];
-            for (int i = 0; i < 4; ++i)
-                side_lines[i] = quad.lines[i] == kCompletedSide ? &completed_[k]
-                                                                : &lines_.lines()[quad.lines[i]];
             Segment sides[4];
-            if (!refine_verified(lines_.edges(), side_lines, params_.refine, quad, sides,
-                                 &quad.score)) {
-                ++quad_stats_.rejected_evidence;
-                continue;
-            }
-            // Refitted sides can move a corner a pixel or two: rule 3 holds for what is kept.
-            if (!rule_corners_inside(quad.corners, lines_.width(), lines_.height(),
-                                     params_.quads)) {
-                ++quad_stats_.rejected_inside;
-                continue;
-            }
-            if (params_.refine.max_junction_corners < 4 &&
-                junction_corners(lines_.edges(), quad.corners, params_.refine) >
-                    params_.refine.max_junction_corners) {
-                ++quad_stats_.rejected_junctions;
-                continue;
-            }
-            const uint8_t inside_limit = params_.refine.max_inside_edge_cells_percent;
-            if (inside_limit != 0 &&  // 0: the test is off, and nothing is counted
-                !interior_clear(
-                    count_inside_edges(lines_.edges(), quad.corners, params_.refine.inside_margin),
-                    lines_.height(), inside_limit)) {
-                ++quad_stats_.rejected_interior;
-                continue;
-            }
-            if (params_.refine.max_lines_across != 255 &&
-                count_lines_across(lines_.lines(), lines_.line_count(), quad.corners,
-                                   params_.refine.inside_margin,
-                                   half_shortest_side(quad)) > params_.refine.max_lines_across) {
-                ++quad_stats_.rejected_across;
-                continue;
-            }
-            // Two candidates that refit to one quadrangle (corners within collinear_distance)
-            // are one: the better scored stays.
-            uint16_t dup = 0;
-            while (dup < kept && !same_corners(quads_[dup], quad, params_.quads.collinear_distance))
-                ++dup;
-            if (dup < kept) {
-                if (quads_[dup].score >= quad.score) continue;
-                for (uint16_t j = dup; j + 1u < kept; ++j) {
-                    quads_[j] = quads_[j + 1];
-                    for (int i = 0; i < 4; ++i) sides_[j][i] = sides_[j + 1][i];
-                }
-                --kept;
-            }
-            uint16_t at = kept;  // insertion by score, earlier rank first among equals
-            while (at > 0 && quad.score > quads_[at - 1].score) {
-                quads_[at] = quads_[at - 1];
-                for (int i = 0; i < 4; ++i) sides_[at][i] = sides_[at - 1][i];
-                --at;
-            }
-            quads_[at] = quad;
-            for (int i = 0; i < 4; ++i) sides_[at][i] = sides[i];
-            ++kept;
+            if (passes_checks(k, quad, sides)) kept = keep(quad, sides, kept);
         }
         quad_count_ = kept;
         quad_stats_.quads = kept;
@@ -158,6 +101,75 @@ public:
     const QuadStats& quad_stats() const { return quad_stats_; }
 
 private:
+    // Candidate k (quad, as detect_quads ranked it) refined and checked as finish() keeps one:
+    // edge evidence on its refitted sides (quad and sides then refined, quad.score the
+    // evidence), rule 3 again for the refitted corners, no sides running on past its corners,
+    // a clear inside, few lines across. False at the first check it fails, counted in the stats.
+    bool passes_checks(uint16_t k, Quad& quad, Segment (&sides)[4]) {
+        const Segment* side_lines[4];
+        for (int i = 0; i < 4; ++i)
+            side_lines[i] =
+                quad.lines[i] == kCompletedSide ? &completed_[k] : &lines_.lines()[quad.lines[i]];
+        if (!refine_verified(lines_.edges(), side_lines, params_.refine, quad, sides,
+                             &quad.score)) {
+            ++quad_stats_.rejected_evidence;
+            return false;
+        }
+        // Refitted sides can move a corner a pixel or two: rule 3 holds for what is kept.
+        if (!rule_corners_inside(quad.corners, lines_.width(), lines_.height(), params_.quads)) {
+            ++quad_stats_.rejected_inside;
+            return false;
+        }
+        if (params_.refine.max_junction_corners < 4 &&
+            junction_corners(lines_.edges(), quad.corners, params_.refine) >
+                params_.refine.max_junction_corners) {
+            ++quad_stats_.rejected_junctions;
+            return false;
+        }
+        const uint8_t inside_limit = params_.refine.max_inside_edge_cells_percent;
+        if (inside_limit != 0 &&  // 0: the test is off, and nothing is counted
+            !interior_clear(
+                count_inside_edges(lines_.edges(), quad.corners, params_.refine.inside_margin),
+                lines_.height(), inside_limit)) {
+            ++quad_stats_.rejected_interior;
+            return false;
+        }
+        if (params_.refine.max_lines_across != 255 &&
+            count_lines_across(lines_.lines(), lines_.line_count(), quad.corners,
+                               params_.refine.inside_margin,
+                               half_shortest_side(quad)) > params_.refine.max_lines_across) {
+            ++quad_stats_.rejected_across;
+            return false;
+        }
+        return true;
+    }
+
+    // Puts a checked quadrangle among the `kept` first of quads_ (and its sides in sides_) by
+    // score, earlier rank first among equals; returns the new count. Two candidates that refit
+    // to one quadrangle (corners within collinear_distance) are one: the better scored stays.
+    uint16_t keep(const Quad& quad, const Segment (&sides)[4], uint16_t kept) {
+        uint16_t dup = 0;
+        while (dup < kept && !same_corners(quads_[dup], quad, params_.quads.collinear_distance))
+            ++dup;
+        if (dup < kept) {
+            if (quads_[dup].score >= quad.score) return kept;
+            for (uint16_t j = dup; j + 1u < kept; ++j) {
+                quads_[j] = quads_[j + 1];
+                for (int i = 0; i < 4; ++i) sides_[j][i] = sides_[j + 1][i];
+            }
+            --kept;
+        }
+        uint16_t at = kept;
+        while (at > 0 && quad.score > quads_[at - 1].score) {
+            quads_[at] = quads_[at - 1];
+            for (int i = 0; i < 4; ++i) sides_[at][i] = sides_[at - 1][i];
+            --at;
+        }
+        quads_[at] = quad;
+        for (int i = 0; i < 4; ++i) sides_[at][i] = sides[i];
+        return static_cast<uint16_t>(kept + 1);
+    }
+
     // Every kept quadrangle's completed sides join the line list (so that Quad::lines index it
     // for every quadrangle), replacing the weakest lines no kept quadrangle uses when it is
     // full; then the best quadrangle's refitted sides replace its lines (what a tracker takes).
