@@ -39,7 +39,8 @@
 #                  (RANSAC, RHO)
 #   track-host     line tracker on the paper's synthetic translations and rotations: overlap
 #                  tables for 1KF, 2KF, 3KF and the turn model, Experiment 1 with varying
-#                  lengths and noise, SVG charts in bench_out/track
+#                  lengths and noise, Experiment 2 in the settings the paper leaves open, SVG
+#                  charts in bench_out/track
 #   streams-host   the board sequences (demo, turning) at 640x480, 768x576, 1280x720 and 1920x1080,
 #                  binned as quadtrack track bins them, with each line model: corner errors while
 #                  sides are hidden and after; and a 1280x720 clip through ffmpeg and GStreamer
