@@ -70,10 +70,11 @@ public:
     Status finish(Mark&& mark) {
         const Status l = lines_.finish(mark);
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
-        const Status q =
-            detect_quads(lines_.lines(), lines_.line_count(), lines_.width(), lines_.height(),
-                         params_.quads, pairs_, PairCapacity, geometry_, quads_, MaxCandidates,
-                         &quad_count_, &quad_stats_, completed_);
+        const QuadSearchMemory memory{pairs_, PairCapacity,  geometry_,
+                                      quads_, MaxCandidates, completed_};
+        const Status q = detect_quads(lines_.lines(), lines_.line_count(), lines_.width(),
+                                      lines_.height(), params_.quads, memory, &quad_stats_);
+        quad_count_ = quad_stats_.quads;
         // Each candidate's sides refitted to the edge points between its corners and verified
         // by that evidence, which also becomes its score; in rank order until MaxQuads are
         // kept (a pattern's own quadrangles can outrank the board and fail).

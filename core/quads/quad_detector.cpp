@@ -430,24 +430,24 @@ void complete_hidden_sides(const Segment* lines, uint16_t n, const QuadLine* geo
 }  // namespace
 
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity,
-                    QuadLine* geometry, Quad* out, uint16_t capacity, uint16_t* count,
-                    QuadStats* stats, Segment* completed) {
-    *count = 0;
+                    const QuadParams& params, const QuadSearchMemory& memory, QuadStats* stats) {
     *stats = QuadStats{};
+    uint16_t count = 0;
+    QuadLine* geometry = memory.geometry;
     if (n >= kCompletedSide || width == 0 || height == 0) return Status::bad_size;
     // Rule 4's shortest side by default a tenth of the frame height: the board is held at a
     // working distance, smaller bright quadrangles are other things.
     const QuadParams rules = sized_quad_params(params, height);
     line_geometry(lines, n, rules, geometry);
-    const uint16_t npairs = parallel_pairs(lines, n, geometry, rules, pairs, pair_capacity, stats);
+    const uint16_t npairs =
+        parallel_pairs(lines, n, geometry, rules, memory.pairs, memory.pair_capacity, stats);
     stats->parallel_pairs = npairs;
-    Candidates candidates(lines, geometry, n, width, height, rules, out, completed, capacity, count,
-                          stats);
-    pairs_of_pairs(lines, geometry, pairs, npairs, rules, candidates, stats);
-    if (completed != nullptr && rules.complete_hidden_side)
-        complete_hidden_sides(lines, n, geometry, pairs, npairs, rules, candidates, stats);
-    stats->quads = *count;
+    Candidates candidates(lines, geometry, n, width, height, rules, memory.out, memory.completed,
+                          memory.capacity, &count, stats);
+    pairs_of_pairs(lines, geometry, memory.pairs, npairs, rules, candidates, stats);
+    if (memory.completed != nullptr && rules.complete_hidden_side)
+        complete_hidden_sides(lines, n, geometry, memory.pairs, npairs, rules, candidates, stats);
+    stats->quads = count;
     return stats->pairs_dropped > 0 ? Status::capacity_exceeded : Status::ok;
 }
 

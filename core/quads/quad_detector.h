@@ -72,23 +72,32 @@ struct QuadLine {
     uint32_t collinear;
 };
 
+// The memory detect_quads works in and writes to, all the caller's: scratch for pair_capacity
+// parallel pairs and for the geometry of every line, room for `capacity` quadrangles, and
+// (optionally) for the completed side of each.
+struct QuadSearchMemory {
+    LinePair* pairs;
+    uint16_t pair_capacity;
+    QuadLine* geometry;  // n entries
+    Quad* out;
+    uint16_t capacity;
+    Segment* completed = nullptr;  // `capacity` entries, or none: no side is completed
+};
+
 // Finds quadrangles among lines[0 .. n) (n <= 254) in a width × height frame. Writes the best
 // `capacity` distinct candidates (two whose corners all lie within collinear_distance of each other
 // are one quadrangle, reported once), highest score first (ties: larger perimeter first, then lower
-// line indices), to out[0 .. *count). `pairs` is scratch for pair_capacity parallel pairs,
-// `geometry` for n lines.
+// line indices), to out[0 .. stats->quads).
 //
-// With `completed` (room for `capacity` lines) and params.complete_hidden_side, a quadrangle
-// may also have one side that no line gives, hidden along most of its length (an arm across
-// it) while its corners show: for a parallel pair (a, b) and a line c almost perpendicular to
-// both, the side joining the ends of a and b farther from c. Its Quad::lines entry is then
-// kCompletedSide and completed[k] holds it for out[k] (only its own visible pieces count as its
-// support; the three others need theirs). Work: P·N more candidates for P pairs, N lines.
-// Returns bad_size for n > 254 or a zero frame size, capacity_exceeded when parallel pairs
-// were dropped (the quads found are still valid and written), ok otherwise.
+// With memory.completed and params.complete_hidden_side, a quadrangle may also have one side
+// that no line gives, hidden along most of its length (an arm across it) while its corners show:
+// for a parallel pair (a, b) and a line c almost perpendicular to both, the side joining the ends
+// of a and b farther from c. Its Quad::lines entry is then kCompletedSide and completed[k] holds
+// it for out[k] (only its own visible pieces count as its support; the three others need
+// theirs). Work: P·N more candidates for P pairs, N lines. Returns bad_size for n > 254 or a zero
+// frame size, capacity_exceeded when parallel pairs were dropped (the quads found are still
+// valid and written), ok otherwise.
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
-                    const QuadParams& params, LinePair* pairs, uint16_t pair_capacity,
-                    QuadLine* geometry, Quad* out, uint16_t capacity, uint16_t* count,
-                    QuadStats* stats, Segment* completed = nullptr);
+                    const QuadParams& params, const QuadSearchMemory& memory, QuadStats* stats);
 
 }  // namespace qt

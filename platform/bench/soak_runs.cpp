@@ -233,9 +233,9 @@ QuadSoakResult run_quad_soak(const QuadSoakConfig& cfg) {
         }
         const bool full = n == 4;
         res.full_frames += full;
-        uint16_t count = 0;
         QuadStats qs;
-        detect_quads(lines, n, kW, kH, QuadParams{}, pairs, 64, geometry, quads, 4, &count, &qs);
+        detect_quads(lines, n, kW, kH, QuadParams{}, {pairs, 64, geometry, quads, 4}, &qs);
+        const uint16_t count = qs.quads;
         const TrackedQuad out = tracker.step(n > 0 ? lines : nullptr, n, quads, count);
         const QuadTrackLost lost = tracker.stats().lost_reason;
         // missed_ counts restart with a track: side_unseen needs max_predicted + 1 frames of it.

@@ -31,12 +31,11 @@ Found find(const std::vector<Segment>& lines, uint16_t w, uint16_t h,
     std::vector<LinePair> pairs(pair_capacity);
     std::vector<QuadLine> geometry(lines.size() + 1);
     std::vector<Quad> out(capacity);
-    uint16_t count = 0;
     Found f;
-    f.status =
-        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), w, h, p, pairs.data(),
-                     pair_capacity, geometry.data(), out.data(), capacity, &count, &f.stats);
-    f.quads.assign(out.begin(), out.begin() + count);
+    f.status = detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), w, h, p,
+                            {pairs.data(), pair_capacity, geometry.data(), out.data(), capacity},
+                            &f.stats);
+    f.quads.assign(out.begin(), out.begin() + f.stats.quads);
     return f;
 }
 
@@ -344,11 +343,11 @@ TEST_CASE("degenerate line sets give no quadrangle and no error", "[quad]") {
     std::vector<LinePair> pairs(4);
     QuadLine geometry[1];
     Quad out[1];
-    uint16_t count = 7;
     QuadStats stats;
-    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, pairs.data(), 4, geometry, out, 1, &count,
-                       &stats) == Status::bad_size);
-    CHECK(count == 0);
+    stats.quads = 7;
+    CHECK(detect_quads(&s, 1, 0, 240, QuadParams{}, {pairs.data(), 4, geometry, out, 1}, &stats) ==
+          Status::bad_size);
+    CHECK(stats.quads == 0);
 }
 
 TEST_CASE("contrast: the board's inside is on every side's bright side", "[quad]") {

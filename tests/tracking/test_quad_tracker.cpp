@@ -100,11 +100,10 @@ struct Harness {
         LinePair pairs[64];
         std::vector<QuadLine> geometry(lines.size() + 1);
         Quad quads[4];
-        uint16_t count = 0;
         QuadStats stats;
-        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), kW, kH, QuadParams{}, pairs,
-                     64, geometry.data(), quads, 4, &count, &stats);
-        return tracker.step(lines.data(), static_cast<uint16_t>(lines.size()), quads, count);
+        detect_quads(lines.data(), static_cast<uint16_t>(lines.size()), kW, kH, QuadParams{},
+                     {pairs, 64, geometry.data(), quads, 4}, &stats);
+        return tracker.step(lines.data(), static_cast<uint16_t>(lines.size()), quads, stats.quads);
     }
     // Frames 0 .. frames − 1 of the board with every side; c is left at the last frame's corners.
     void warm_up(int frames, P c[4]) {
