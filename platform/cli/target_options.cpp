@@ -241,6 +241,10 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
             integer<uint16_t>(
                 "max-unseen", "FRAMES", "lost after this many frames without a match, 1..65535", 1,
                 65535, [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
+            real("max-outside", "FRAMES",
+                 "lost when the estimate is more than this many frame widths (heights) outside "
+                 "the image, 0..100",
+                 0, 100, [](TargetOptions& o) -> float& { return o.config.tracker.max_outside; }),
             integer<uint16_t>(
                 "coast-fit", "FRAMES",
                 "leaving the image, the estimate coasts on the track (--coast-track) fitted to "

@@ -696,6 +696,42 @@ TEST_CASE("TargetTracker lost rules: unseen, bad geometry, implausible accumulat
     }
 }
 
+TEST_CASE("TargetTracker lost rule: an estimate more than max_outside frames outside the image",
+          "[target]") {
+    // A static camera; the target measured moving right at 8 px a frame from x = 200 until it
+    // leaves the 320-px image, then nothing: the estimate coasts on, out of view, until it is
+    // more than one frame width (320 px) right of the image, x > 319.5 + 320 = 639.5 (by hand).
+    // Lost there, and held: no later frame reports a position farther out.
+    for (const float reach : {1.0f, 0.25f}) {
+        TargetTrackerParams params;
+        params.max_outside = reach;
+        const float limit = 319.5f + reach * 320.0f;
+        TargetTracker t;
+        t.init(200, 100, 320, 240, params);
+        float x = 200, lost_at = -1, held = 0;
+        bool was_out = false;
+        for (int k = 1; k <= 200; ++k) {
+            t.predict(geometry(Homography{}));
+            x += 8;
+            const TargetEstimate e = t.update(x < 319 ? seen(x, 100) : kNone);
+            INFO("reach " << reach << ", frame " << k << ": x " << e.x << ", "
+                          << target_state_name(e.state));
+            if (e.state == TargetState::out_of_view) {
+                was_out = true;
+                CHECK(e.x <= limit);
+            }
+            if (e.state == TargetState::lost && lost_at < 0) {
+                lost_at = e.x;
+                held = e.x;
+            }
+            if (lost_at >= 0) CHECK(e.x == held);
+        }
+        CHECK(was_out);
+        REQUIRE(lost_at > limit);       // the first estimate past the reach
+        CHECK(lost_at < limit + 8.5f);  // one frame's motion past it at most
+    }
+}
+
 TEST_CASE("TargetTracker methods: homography only, filter only, template only", "[target]") {
     SECTION("homography_only: A applied to the start, radius 0, never measured") {
         TargetTrackerParams params;

@@ -87,6 +87,12 @@ bool TargetTracker::in_image(float x, float y) const {
            y < static_cast<float>(height_) - 0.5f;
 }
 
+bool TargetTracker::within_reach(float x, float y) const {
+    const float w = static_cast<float>(width_), h = static_cast<float>(height_);
+    const float rx = params_.max_outside * w, ry = params_.max_outside * h;
+    return x >= -0.5f - rx && y >= -0.5f - ry && x <= w - 0.5f + rx && y <= h - 0.5f + ry;
+}
+
 bool TargetTracker::paper_formulation() const {
     return params_.method == TargetMethod::fused && params_.formulation == TargetFormulation::paper;
 }
@@ -315,7 +321,8 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         const bool geometry_gone =
             params_.method != TargetMethod::filter_only &&
             (bad_geometry_ > params_.max_bad_geometry || !accumulation_plausible());
-        if (unseen_ > params_.max_unseen || geometry_gone) state_ = TargetState::lost;
+        if (unseen_ > params_.max_unseen || geometry_gone || !within_reach(x, y))
+            state_ = TargetState::lost;
     }
     position(e.x, e.y);
     e.state = state_;

@@ -27,7 +27,9 @@
 // measurement for more than max_unseen frames, or more than max_bad_geometry consecutive
 // frames without a trustworthy homography while unseen, or A no longer a plausible camera
 // motion: it sends the estimate to infinity, or scales the area around it by a factor outside
-// [1/max_scale², max_scale²] — then A's position is not worth reporting).
+// [1/max_scale², max_scale²] — then A's position is not worth reporting — or the estimate more
+// than max_outside frame widths (heights) outside the image: a coasting estimate that far out
+// is no longer a place to look for the target. A lost target's last estimate is held.
 //
 // The comparison methods of the paper's §IV are modes of the same tracker (TargetMethod).
 // Float only, never double; no heap.
@@ -115,6 +117,9 @@ struct TargetTrackerParams {
     uint16_t max_bad_geometry =
         15;                  // lost after this many untrustworthy homographies in a row, unseen
     float max_scale = 4.0f;  // lost when A scales the area at the estimate beyond max_scale²
+    // Lost when the estimate, unseen, is more than this many frame widths left or right of the
+    // image (heights above or below): frames; 0 loses it as soon as it leaves the image.
+    float max_outside = 1.0f;
     // Coasting out of view (fused, reference formulation): when the estimate leaves the image,
     // it follows the track fitted by least squares to the accepted measurements of the last
     // coast_fit_frames frames (at least 8 of them, in the reference image), frames;
@@ -193,6 +198,7 @@ public:
 
 private:
     bool in_image(float x, float y) const;
+    bool within_reach(float x, float y) const;
     bool accumulation_plausible() const;
     bool paper_formulation() const;
     void position(float& x, float& y) const;  // A x̂, current image
