@@ -68,6 +68,8 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     bad_geometry_ = 0;
     last_x_ = x;
     last_y_ = y;
+    held_x_ = x;
+    held_y_ = y;
     ref_x_ = x;
     ref_y_ = y;
     history_start_ = 0;
@@ -271,7 +273,8 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     const float det_j = j[0] * j[3] - j[1] * j[2];
     e.det_s = gate.det_s * det_j * det_j;  // det(J S Jᵀ), px⁴ in the current image
     if (state_ == TargetState::lost) {
-        position(e.x, e.y);
+        e.x = held_x_;
+        e.y = held_y_;
         e.state = state_;
         e.unseen = unseen_;
         return e;
@@ -324,7 +327,10 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         if (unseen_ > params_.max_unseen || geometry_gone || !within_reach(x, y))
             state_ = TargetState::lost;
     }
-    position(e.x, e.y);
+    // A lost target's estimate is the last one reported before it was lost (within reach).
+    if (state_ != TargetState::lost) position(held_x_, held_y_);
+    e.x = held_x_;
+    e.y = held_y_;
     e.state = state_;
     e.unseen = unseen_;
     return e;

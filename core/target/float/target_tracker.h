@@ -29,7 +29,8 @@
 // motion: it sends the estimate to infinity, or scales the area around it by a factor outside
 // [1/max_scale², max_scale²] — then A's position is not worth reporting — or the estimate more
 // than max_outside frame widths (heights) outside the image: a coasting estimate that far out
-// is no longer a place to look for the target. A lost target's last estimate is held.
+// is no longer a place to look for the target. A lost target reports the last estimate it
+// reported before it was lost.
 //
 // The comparison methods of the paper's §IV are modes of the same tracker (TargetMethod).
 // Float only, never double; no heap.
@@ -220,6 +221,7 @@ private:
     uint16_t unseen_ = 0;
     uint16_t bad_geometry_ = 0;
     float last_x_ = 0, last_y_ = 0;  // template_only: the last match
+    float held_x_ = 0, held_y_ = 0;  // the last estimate reported while not lost
     // The accepted measurements of the last frames, in the reference image (A⁻¹ z, carried by
     // A at each reset), oldest first from history_start_ (a ring), with their frame.
     static constexpr uint16_t kHistory = kMaxCoastFitFrames + 1;
