@@ -138,9 +138,9 @@ module tb_front;
     reg [8:0]  frame_thr;        // the value the frame on the link must see
     reg [8:0]  last_thr = 9'd0;  // the last frame's value (scrambling avoids it)
     always @(negedge clk) begin
-        thr_hash  = g_tdata * 32'h9E3779B1 + threshold;
-        frame_thr = vary != 0 ? 9'd1 + {2'b00, thr_hash[31:25]} : threshold[8:0];
         if (g_tvalid && g_tuser[0] && (vary != 0 || scramble != 0)) begin
+            thr_hash  = g_tdata * 32'h9E3779B1 + threshold;
+            frame_thr = vary != 0 ? 9'd1 + {2'b00, thr_hash[31:25]} : threshold[8:0];
             cfg_threshold <= frame_thr;
             last_thr = frame_thr;
         end else if (scramble != 0) begin

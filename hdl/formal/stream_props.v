@@ -58,14 +58,21 @@ module stream_props #(
         if (aresetn && !p_rst && p_valid)
             assume(s_tvalid && s_tdata == p_tdata && s_tuser == p_tuser && s_tlast == p_tlast);
 
-    // The output side: what the sink saw.
+    // The output side: what the sink saw. And since the last reset: an input beat taken; the
+    // first frame's height at its first word (0: not started); rows of the first frame taken at
+    // the output; an error raised.
     reg        q_stall = 1'b0;              // a beat was offered and not taken last clock
     reg [34:0] q_beat  = 35'd0;
     reg        in_frame = 1'b0;             // a frame's first beat was taken, not its last
     reg [15:0] col = 16'd0;                 // column of the next beat in its row
     reg [15:0] width = 16'd0;               // columns of the frame's first row (0: not known)
+    reg        s_seen  = 1'b0;
+    reg [15:0] h_first = 16'd0;
+    reg [15:0] rows_out = 16'd0;
+    reg        out_done = 1'b0, err_seen = 1'b0;
 
     wire       take = m_tvalid & m_tready;
+    wire       s_take = s_tvalid & s_tready;
 
     always @(posedge aclk) begin
         if (!aresetn) begin
@@ -73,6 +80,11 @@ module stream_props #(
             in_frame <= 1'b0;
             col      <= 16'd0;
             width    <= 16'd0;
+            s_seen   <= 1'b0;
+            h_first  <= 16'd0;
+            rows_out <= 16'd0;
+            out_done <= 1'b0;
+            err_seen <= 1'b0;
         end else begin
             q_stall <= m_tvalid & ~m_tready;
             q_beat  <= {m_tuser, m_tlast, m_tdata};
@@ -88,24 +100,6 @@ module stream_props #(
                 if (m_tuser[0] && !m_tlast)
                     width <= 16'd0;
             end
-        end
-    end
-
-    // Since the last reset: an input beat taken; the first frame's height at its first word
-    // (0: not started); rows of the first frame taken at the output; an error raised.
-    reg        s_seen  = 1'b0;
-    reg [15:0] h_first = 16'd0;
-    reg [15:0] rows_out = 16'd0;
-    reg        out_done = 1'b0, err_seen = 1'b0;
-    wire       s_take = s_tvalid & s_tready;
-    always @(posedge aclk) begin
-        if (!aresetn) begin
-            s_seen   <= 1'b0;
-            h_first  <= 16'd0;
-            rows_out <= 16'd0;
-            out_done <= 1'b0;
-            err_seen <= 1'b0;
-        end else begin
             if (s_take) s_seen <= 1'b1;
             if (s_take && s_tuser && h_first == 16'd0 && cfg_height != 16'd0)
                 h_first <= cfg_height;

@@ -80,13 +80,6 @@ const qt::test::TempDir& temp() {
     return dir;
 }
 
-std::string write(const std::string& name, const qt::io::GreyImage& img) {
-    const std::string path = temp().path(name);
-    std::string error;
-    REQUIRE(qt::io::write_pgm(path, img, error));
-    return path;
-}
-
 struct Cmd {
     const char* name;
     Command run;
@@ -104,8 +97,8 @@ std::vector<Cmd> commands() {
         o.clutter_lines = 40;
         o.clutter_shapes = 40;
         o.occlude = seed == 3;
-        frames.push_back({write("detect" + std::to_string(seed) + ".pgm",
-                                qt::scene::make_board_bench_scene(o, seed).image)});
+        frames.push_back({temp().pgm("detect" + std::to_string(seed) + ".pgm",
+                                     qt::scene::make_board_bench_scene(o, seed).image)});
     }
     std::vector<std::array<double, 8>> truth;
     const std::filesystem::path barred = temp().dir / "barred";
@@ -116,7 +109,7 @@ std::vector<Cmd> commands() {
     for (int k = 0; k < ground.frames(); ++k) {
         char name[32];
         std::snprintf(name, sizeof name, "g%03d.pgm", k);
-        write(name, ground.render(k));
+        temp().pgm(name, ground.render(k));
     }
     const qt::cli::TargetBox box = qt::cli::start_box(ground.truth(0));
     const std::string roi = std::to_string(box.x) + "," + std::to_string(box.y) + "," +

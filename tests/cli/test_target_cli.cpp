@@ -38,13 +38,6 @@ const qt::test::TempDir& temp() {
     return dir;
 }
 
-std::string write(const std::string& name, const qt::io::GreyImage& img) {
-    const std::string path = temp().path(name);
-    std::string error;
-    REQUIRE(qt::io::write_pgm(path, img, error));
-    return path;
-}
-
 // One line of stderr, nothing on stdout.
 void check_error(const qt::test::CliRun& r, int status, const std::string& needle) {
     CHECK(r.status == status);
@@ -58,7 +51,8 @@ void check_error(const qt::test::CliRun& r, int status, const std::string& needl
 TEST_CASE("quadtrack homography: two frames of the airborne sequence give the ground's homography",
           "[target][cli]") {
     const qt::scene::GroundSequence seq(qt::scene::short_ground_sequence());
-    const std::string a = write("h_a.pgm", seq.render(20)), b = write("h_b.pgm", seq.render(21));
+    const std::string a = temp().pgm("h_a.pgm", seq.render(20)),
+                      b = temp().pgm("h_b.pgm", seq.render(21));
     const auto r = homography({a, b});
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());
@@ -90,7 +84,7 @@ TEST_CASE("quadtrack homography: two frames of the airborne sequence give the gr
 }
 
 TEST_CASE("quadtrack homography: errors and a pair with nothing to match", "[target][cli]") {
-    const std::string flat = write("flat.pgm", qt::io::GreyImage(64, 48, 90));
+    const std::string flat = temp().pgm("flat.pgm", qt::io::GreyImage(64, 48, 90));
     const auto none = homography({flat, flat});
     REQUIRE(none.status == 0);  // a result, not an error: H is null and status says why
     const Json j = JsonReader::parse(none.out);
@@ -103,7 +97,7 @@ TEST_CASE("quadtrack homography: errors and a pair with nothing to match", "[tar
     check_error(homography({flat, flat, "--inlier-px", "0"}), 2, "--inlier-px: 0 is out of range");
     check_error(homography({flat, flat, "--roi", "1,1,5,5"}), 2, "unknown option '--roi'");
     check_error(homography({flat, temp().path("missing.pgm")}), 1, "missing.pgm");
-    const std::string big = write("big.pgm", qt::io::GreyImage(641, 10, 0));
+    const std::string big = temp().pgm("big.pgm", qt::io::GreyImage(641, 10, 0));
     check_error(homography({flat, big, "--bin", "1"}), 1,
                 "641 x 10 binned by 1 is 641 x 10, not within this build's 640 x 480");
     const auto help = homography({"--help"});
@@ -118,7 +112,7 @@ TEST_CASE("quadtrack target: the sequence's target tracked through the flare and
     for (int k = 0; k < seq.frames(); ++k) {
         char name[32];
         std::snprintf(name, sizeof name, "t%03d.pgm", k);
-        write(name, seq.render(k));
+        temp().pgm(name, seq.render(k));
     }
     const qt::cli::TargetBox box = qt::cli::start_box(seq.truth(0));
     const std::string roi = std::to_string(box.x) + "," + std::to_string(box.y) + "," +
@@ -152,8 +146,8 @@ TEST_CASE("quadtrack target: the sequence's target tracked through the flare and
 }
 
 TEST_CASE("quadtrack target: command-line and input errors", "[target][cli]") {
-    const std::string f = write("e000.pgm", qt::io::GreyImage(64, 48, 90));
-    write("e001.pgm", qt::io::GreyImage(64, 40, 90));
+    const std::string f = temp().pgm("e000.pgm", qt::io::GreyImage(64, 48, 90));
+    temp().pgm("e001.pgm", qt::io::GreyImage(64, 40, 90));
     check_error(target({f}), 2, "--roi X,Y,W,H is required");
     check_error(target({f, "--roi", "1,2,3"}), 2, "is not x,y,w,h");
     check_error(target({f, "--roi", "1,2,400,3"}), 2,

@@ -9,6 +9,8 @@
 #include <random>
 #include <string>
 
+#include "io/image_io.h"
+
 namespace qt::test {
 
 struct TempDir {
@@ -36,6 +38,15 @@ struct TempDir {
         REQUIRE(f != nullptr);
         REQUIRE(std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size());
         REQUIRE(std::fclose(f) == 0);
+        return p;
+    }
+    // Writes `img` to `name` as a PGM and returns its path.
+    std::string pgm(const std::string& name, const io::GreyImage& img) const {
+        const std::string p = path(name);
+        std::string error;
+        const bool written = io::write_pgm(p, img, error);
+        INFO(error);
+        REQUIRE(written);
         return p;
     }
 };
