@@ -153,13 +153,17 @@ void qt_config_default(qt_config* config, uint16_t width, uint16_t height) {
 
 qt_status qt_config_check(const qt_config* c) {
     if (c == nullptr) return QT_NULL_POINTER;
-    // The command line's ranges (platform/cli/cli_options.cpp), in the same units.
-    const bool ok = c->edge_threshold >= 1 && c->edge_threshold <= 510 && c->hough_threshold >= 1 &&
-                    c->hough_threshold <= 255 && c->min_line_length >= 2 &&
-                    c->min_line_length <= 2048 && c->max_line_gap <= 255 &&
+    // The ranges core declares beside each field's parameter struct (base/setting_range.h), in
+    // the same units: the command line reads the same ones.
+    const bool ok = qt::kLineRanges.edge_threshold.contains(c->edge_threshold) &&
+                    qt::kHoughRanges.threshold.contains(c->hough_threshold) &&
+                    qt::kHoughRanges.min_line_length.contains(c->min_line_length) &&
+                    qt::kHoughRanges.max_line_gap.contains(c->max_line_gap) &&
                     c->contrast <= QT_CONTRAST_ANY && c->model <= QT_MODEL_TURN &&
-                    c->filters >= 1 && c->filters <= 3 && c->gate_angle_deg <= 90 &&
-                    c->gate_distance_px <= 1000;
+                    qt::kQuadTrackerRanges.filters.contains(c->filters) &&
+                    qt::kQuadTrackerRanges.max_predicted.contains(c->max_predicted) &&
+                    qt::kQuadTrackerRanges.gate_angle.contains(c->gate_angle_deg) &&
+                    qt::kQuadTrackerRanges.gate_distance.contains(c->gate_distance_px);
     return ok ? QT_OK : QT_BAD_CONFIG;
 }
 

@@ -131,7 +131,8 @@ typedef struct qt_config {
     uint8_t model;             /* enum qt_model, 0..1 */
     uint8_t filters;           /* QT_MODEL_PAPER: Kalman filters per side, 1..3 (3 = 3KF) */
     uint8_t max_predicted;     /* a side may go unseen this many frames in a row before the
-                                  track is dropped, frames, 0..255 (255: never for that reason) */
+                                  track is dropped, frames, 0..254, or 255: never for that
+                                  reason (off) */
     uint16_t gate_angle_deg;   /* a detected line serves a tracked side only within this angle
                                   of its prediction, whole degrees, 0..90 */
     uint16_t gate_distance_px; /* ... and with both ends within this distance of it, whole

@@ -27,12 +27,15 @@
 #include <stdint.h>
 
 #include "base/fixed.h"
+#include "base/setting_range.h"
 #include "base/status.h"
 
 namespace qt {
 
 // The largest binning factor: 16 × 16 blocks still sum in 16 bits.
 constexpr uint8_t kMaxBinFactor = 16;
+// The binning factor's range (base/setting_range.h).
+inline constexpr SettingRange kBinFactorRange{"", 1, kMaxBinFactor};
 
 // The smallest factor N in 1..kMaxBinFactor for which floor(width / N) × floor(height / N) fits
 // max_width × max_height (and is not empty); 0 when width or height is 0 or no factor fits.

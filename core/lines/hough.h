@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 #include "base/isqrt.h"
+#include "base/setting_range.h"
 #include "base/status.h"
 #include "lines/edge_list.h"
 #include "lines/segment.h"
@@ -41,6 +42,22 @@ struct HoughParams {
     uint16_t max_voters = 0;
     uint64_t seed = 1;  // visiting order
 };
+
+// HoughParams' units and accepted ranges (base/setting_range.h). rho_step: 2 or 4 in the range
+// (the VGA build's accumulator has no room for 1); theta_bins at most the build's capacity.
+struct HoughRanges {
+    SettingRange theta_bins{"bins", 2, 90};
+    SettingRange rho_step{"px", 2, 4};
+    SettingRange threshold{"votes", 1, 255};
+    SettingRange min_line_length{"px", 2, 2048};
+    SettingRange max_line_gap{"px", 0, 255};
+    SettingRange vote_window_deg{"degrees", 1, 90};
+    SettingRange corridor{"px", 0, 4};
+    SettingRange max_walk_steps{"steps", 1, 100000000};
+    SettingRange max_voters{"points", 0, 65535};
+    SettingRange seed{"", 0, 2147483647};
+};
+inline constexpr HoughRanges kHoughRanges{};
 
 struct HoughStats {
     uint32_t points_visited = 0;    // edge points that voted

@@ -13,6 +13,7 @@
 
 #include "base/angle.h"
 #include "base/fixed.h"
+#include "base/setting_range.h"
 #include "base/status.h"
 #include "lines/segment.h"
 
@@ -33,6 +34,17 @@ struct CornerParams {
     q16_16 max_distance = q16_16::from_int(4);  // an end moves at most this far, pixels
     angle_t min_angle = angle_from_deg(20);     // lines closer to parallel are left alone
 };
+
+// ClusterParams' and CornerParams' units and accepted ranges (base/setting_range.h).
+struct ClusterRanges {
+    SettingRange distance{"px", 0, 1000};
+    SettingRange max_angle{"degrees", 0, 90};
+    SettingRange gap{"px", 0, 2048};
+    SettingRange offset{"px", 0, 1000};
+    SettingRange corner_distance{"px", 0, 100};
+    SettingRange corner_angle{"degrees", 0, 90};
+};
+inline constexpr ClusterRanges kClusterRanges{};
 
 struct ClusterStats {
     uint16_t clusters = 0;

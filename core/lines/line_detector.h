@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include "base/capacity.h"
+#include "base/setting_range.h"
 #include "gradient/gradient_stage.h"
 #include "lines/edge_beat.h"
 #include "lines/edge_stage.h"
@@ -43,6 +44,14 @@ struct LineParams {
     ClusterParams cluster;
     CornerParams corners;
 };
+
+// LineParams' own units and accepted ranges (base/setting_range.h); the rest are kHoughRanges
+// and kClusterRanges.
+struct LineRanges {
+    SettingRange edge_threshold{"grey levels", 1, 510};
+    SettingRange canny_high{"grey levels", 0, 510};
+};
+inline constexpr LineRanges kLineRanges{};
 
 // The stages of finish(), in order: PPHT; clustering and corner joining; the quadrangle rules
 // (board_detector.h). finish(mark) calls mark(stage) as each ends, so a caller can time them.

@@ -40,6 +40,8 @@ public:
                (sizeof(Quad) + sizeof(Segment)) * MaxCandidates + 4 * sizeof(Segment) * MaxQuads;
     }
     static constexpr uint16_t max_quads() { return MaxQuads; }
+    // Quadrangles a caller may ask for, best first (base/setting_range.h).
+    static constexpr SettingRange quads_range{"", 1, MaxQuads};
 
     Status begin_frame(uint16_t width, uint16_t height, const BoardParams& params) {
         params_ = params;
@@ -121,21 +123,21 @@ private:
             ++quad_stats_.rejected_inside;
             return false;
         }
-        if (params_.refine.max_junction_corners < 4 &&
+        if (params_.refine.max_junction_corners != kCheckOff &&
             junction_corners(lines_.edges(), quad.corners, params_.refine) >
                 params_.refine.max_junction_corners) {
             ++quad_stats_.rejected_junctions;
             return false;
         }
         const uint8_t inside_limit = params_.refine.max_inside_edge_cells_percent;
-        if (inside_limit != 0 &&  // 0: the test is off, and nothing is counted
+        if (inside_limit != kCheckOff &&  // off: nothing is counted
             !interior_clear(
                 count_inside_edges(lines_.edges(), quad.corners, params_.refine.inside_margin),
                 lines_.height(), inside_limit)) {
             ++quad_stats_.rejected_interior;
             return false;
         }
-        if (params_.refine.max_lines_across != 255 &&
+        if (params_.refine.max_lines_across != kCheckOff &&
             count_lines_across(lines_.lines(), lines_.line_count(), quad.corners,
                                params_.refine.inside_margin,
                                half_shortest_side(quad)) > params_.refine.max_lines_across) {

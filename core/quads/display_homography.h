@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "base/fixed.h"
+#include "base/setting_range.h"
 #include "quads/quad_rules.h"
 
 namespace qt {
@@ -30,6 +31,9 @@ struct DisplayHomography {
 // so degenerate (three corners nearly collinear) that g or h would leave its format.
 bool display_homography(const Point16 corners[4], uint16_t display_width, uint16_t display_height,
                         DisplayHomography& h);
+
+// The display's width and height, display px (base/setting_range.h).
+inline constexpr SettingRange kDisplaySizeRange{"display px", 1, 4096};
 
 // Image point of display point (u, v), pixels, |u|, |v| <= 4096. False outside that range or
 // when (u, v) maps to infinity (w <= 2^-20, the far side of the horizon line).

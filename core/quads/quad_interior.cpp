@@ -179,7 +179,7 @@ uint16_t count_lines_across(const Segment* lines, uint16_t n, const Point16 corn
 }
 
 bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent) {
-    if (limit_percent == 0) return true;
+    if (limit_percent == kCheckOff) return true;
     return static_cast<uint64_t>(count.cells) * 400u * isqrt32(uint32_t{height} << 16) <=
            static_cast<uint64_t>(limit_percent) * count.area_px * isqrt32(240u << 16);
 }

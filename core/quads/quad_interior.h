@@ -41,7 +41,7 @@ InteriorCount count_inside_edges(const EdgeList& edges, const Point16 corners[4]
 // True when the inside is clear: at most limit_percent % of its cells hold an edge point at
 // 240 rows, limit_percent · √(240 / height) % at `height` rows, i.e.
 // cells · 400 · √(height) <= limit_percent · area · √240 (the roots as isqrt of the value
-// · 2^16). 0 turns the test off.
+// · 2^16). kCheckOff (base/setting_range.h) turns the test off.
 bool interior_clear(const InteriorCount& count, uint16_t height, uint8_t limit_percent);
 
 // The lines of `lines` that run across the convex quadrangle `corners` (either orientation):

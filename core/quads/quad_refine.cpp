@@ -240,8 +240,10 @@ bool refit_side(const EdgeList& edges, const Segment& line, Point16 a, Point16 b
     return true;
 }
 
-// Side i of a verified quadrangle: evidence on both ends and on `least` % of its steps.
+// Side i of a verified quadrangle: evidence on both ends and on `least` % of its steps (always,
+// when `least` is kCheckOff).
 bool side_passes(const SideEvidence& e, int i, uint32_t least) {
+    if (least == kCheckOff) return true;
     return e.steps[i] > 0 && e.ends[i] == 3u && e.held[i] * 100u >= e.steps[i] * least;
 }
 
@@ -342,7 +344,7 @@ bool refine_verified(const EdgeList& edges, const Segment* const lines[4],
     bool stopped = false;
     const uint8_t refitted = refit_sides(
         edges, lines, params, quad, fitted, found, &stopped, [&](const SideEvidence& e, int i) {
-            return !params.verify || side_passes(e, i, least_evidence(params, completed, i));
+            return side_passes(e, i, least_evidence(params, completed, i));
         });
     if (stopped) return false;
     SideEvidence evidence;
@@ -396,7 +398,8 @@ bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParam
     }
     *share = q16_16::from_raw(
         steps > 0 ? static_cast<int32_t>((static_cast<int64_t>(held) << 16) / steps) : 0);
-    return !params.verify || (sides_ok && held * 100u >= steps * params.min_evidence_percent);
+    return sides_ok && (params.min_evidence_percent == kCheckOff ||
+                        held * 100u >= steps * params.min_evidence_percent);
 }
 
 }  // namespace qt

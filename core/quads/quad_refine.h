@@ -18,6 +18,7 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/setting_range.h"
 #include "lines/edge_list.h"
 #include "lines/segment.h"
 #include "quads/quad_detector.h"
@@ -37,25 +38,40 @@ struct RefineParams {
     // Verification: a quadrangle is kept when each side shows next to both its corners and has
     // edge evidence on at least min_side_evidence_percent of its steps (a completed side, see
     // detect_quads: min_hidden_side_evidence_percent), and the four together on
-    // min_evidence_percent.
+    // min_evidence_percent. Each at kCheckOff: that check is not made (the side's, with its
+    // corners; all three off keeps every candidate, scored by its evidence all the same).
     uint8_t min_side_evidence_percent = 30;
     uint8_t min_hidden_side_evidence_percent = 20;
     uint8_t min_evidence_percent = 60;
-    bool verify = true;  // false: every candidate is kept, scored by its evidence all the same
     // The inside (quad_interior.h): a kept quadrangle has at most this share of the 2 × 2 px
     // cells inside it holding an edge point farther than inside_margin from its sides, % at
-    // 240 rows (scaled by √(240 / rows)). 0: not tested (a board showing projected or printed
-    // content with strong edges).
+    // 240 rows (scaled by √(240 / rows)). kCheckOff: not tested (a board showing projected or
+    // printed content with strong edges).
     uint8_t max_inside_edge_cells_percent = 16;
     q16_16 inside_margin = q16_16::from_int(4);  // px
     // A kept quadrangle is crossed by at most this many lines of the line list, each inside it
-    // over at least half its shortest side (quad_interior.h, count_lines_across); 255: not
+    // over at least half its shortest side (quad_interior.h, count_lines_across); kCheckOff: not
     // tested (a board seen through a grid, a window's bars).
     uint8_t max_lines_across = 2;
     // A kept quadrangle has at most this many corners where both its sides run on
-    // (junction_corners); 4: not tested.
+    // (junction_corners); kCheckOff: not tested.
     uint8_t max_junction_corners = 1;
 };
+
+// RefineParams' units and accepted ranges (base/setting_range.h); the limits marked can_be_off
+// switch their check off at kCheckOff.
+struct RefineRanges {
+    SettingRange band{"px", 0, 8};
+    SettingRange fine_band{"px", 5, 80, 1};  // 0.5..8
+    SettingRange min_side_evidence_percent{"%", 0, 100, 0, true};
+    SettingRange min_hidden_side_evidence_percent{"%", 0, 100, 0, true};
+    SettingRange min_evidence_percent{"%", 0, 100, 0, true};
+    SettingRange max_inside_edge_cells_percent{"%", 0, 100, 0, true};
+    SettingRange inside_margin{"px", 0, 16};
+    SettingRange max_lines_across{"lines", 0, 254, 0, true};
+    SettingRange max_junction_corners{"corners", 0, 3, 0, true};
+};
+inline constexpr RefineRanges kRefineRanges{};
 
 // The edge evidence of a quadrangle's sides: per side, the steps along it (pixels of its major
 // axis between the end margins) and those holding an edge point of the side's polarity within
@@ -81,15 +97,15 @@ uint8_t refine_quad(const EdgeList& edges, const Segment* const lines[4],
 
 // refine_quad, then verify_evidence (completed: the sides quad.lines marks kCompletedSide), as
 // BoardDetector keeps a candidate: true when it passes, with quad and sides refined and *score
-// its share of steps with evidence. A side whose evidence already fails (params.verify) ends
+// its share of steps with evidence. A side whose evidence already fails ends
 // the work there, false: the sides after it are not walked (on a busy frame most candidates
 // fail, and each side costs two walks); quad is then left as given and sides unwritten.
 bool refine_verified(const EdgeList& edges, const Segment* const lines[4],
                      const RefineParams& params, Quad& quad, Segment sides[4], q16_16* score);
 
 // The share of the steps with evidence over the four sides, q16_16 in [0, 1]; false when a
-// side or the whole falls below the verification limits of `params` (never when
-// params.verify is false). completed: bit i when side i was completed rather than found.
+// side or the whole falls below the verification limits of `params` that are not kCheckOff.
+// completed: bit i when side i was completed rather than found.
 bool verify_evidence(const SideEvidence& e, uint8_t completed, const RefineParams& params,
                      q16_16* share);
 

@@ -11,6 +11,7 @@
 
 #include "base/angle.h"
 #include "base/fixed.h"
+#include "base/setting_range.h"
 #include "lines/segment.h"
 
 namespace qt {
@@ -70,6 +71,23 @@ struct QuadParams {
     // sides next to it (detect_quads), then must show edge evidence of its own (quad_refine.h).
     bool complete_hidden_side = true;
 };
+
+// QuadParams' units and accepted ranges (base/setting_range.h); aspects and coverages are
+// factors and fractions, without a unit.
+struct QuadRanges {
+    SettingRange parallel_tolerance{"degrees", 0, 45};
+    SettingRange perpendicular_tolerance{"degrees", 0, 60};
+    SettingRange corner_margin{"px", 0, 1000};
+    SettingRange min_side_length{"px", 0, 2048};
+    SettingRange max_side_length{"px", 1, 2048};
+    SettingRange aspect_tolerance{"", 1, 10};
+    SettingRange tilted_aspect_tolerance{"", 1, 10};
+    SettingRange perspective_convergence{"degrees", 0, 90};
+    SettingRange min_side_coverage{"", 0, 1};
+    SettingRange collinear_distance{"px", 0, 100};
+    SettingRange min_score{"", 0, 1};
+};
+inline constexpr QuadRanges kQuadRanges{};
 
 // The parameters with the frame-size defaults filled in for a frame `height` px tall: a
 // min_side_length of 0 becomes a tenth of the height (at least 1 px).

@@ -18,6 +18,7 @@
 #include <arm_acle.h>
 #endif
 
+#include "base/setting_range.h"
 #include "target/feature.h"
 
 namespace qt {
@@ -185,6 +186,13 @@ struct MatchParams {
     int16_t min_margin_q15 = 1638;
     uint32_t min_variance = kNccMinVariance;  // flat patches never match (see above)
 };
+
+// MatchParams' units and accepted ranges (base/setting_range.h); the score in NCC, -1..1.
+struct MatchRanges {
+    SettingRange search_radius_px{"px", 1, 128};
+    SettingRange min_score{"", -1, 1};
+};
+inline constexpr MatchRanges kMatchRanges{};
 
 struct FeatureMatch {
     uint16_t prev, cur;  // indices into the two sets

@@ -47,6 +47,7 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/setting_range.h"
 #include "lines/segment.h"
 #include "quads/quad_detector.h"
 #include "quads/quad_rules.h"
@@ -78,6 +79,16 @@ struct QuadTrackerParams {
     // Shape limits of the rebuilt quadrangle (side lengths; the other rules are detection's).
     QuadParams shape;
 };
+
+// The units and accepted ranges of QuadTrackerParams' gates and of LineTrackerParams::filters
+// (base/setting_range.h); max_predicted at kCheckOff: a track is never dropped for it.
+struct QuadTrackerRanges {
+    SettingRange gate_angle{"degrees", 0, 90};
+    SettingRange gate_distance{"px", 0, 1000};
+    SettingRange max_predicted{"frames", 0, 254, 0, true};
+    SettingRange filters{"", 1, 3};
+};
+inline constexpr QuadTrackerRanges kQuadTrackerRanges{};
 
 // QuadTrackerParams for a width × height frame with default_line_tracker_params().
 QuadTrackerParams default_quad_tracker_params(uint16_t width, uint16_t height);

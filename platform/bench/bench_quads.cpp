@@ -106,10 +106,12 @@ bool rules_only(const qt::io::GreyImage& img, Corners& c) {
     p.quads.min_side_coverage = qt::q16_16::from_int(0);
     p.quads.min_score = qt::q16_16::from_int(0);
     p.quads.complete_hidden_side = false;
-    p.refine.verify = false;
-    p.refine.max_inside_edge_cells_percent = 0;
-    p.refine.max_lines_across = 255;
-    p.refine.max_junction_corners = 4;
+    p.refine.min_side_evidence_percent = qt::kCheckOff;
+    p.refine.min_hidden_side_evidence_percent = qt::kCheckOff;
+    p.refine.min_evidence_percent = qt::kCheckOff;
+    p.refine.max_inside_edge_cells_percent = qt::kCheckOff;
+    p.refine.max_lines_across = qt::kCheckOff;
+    p.refine.max_junction_corners = qt::kCheckOff;
     return detect_with(img, p, c);
 }
 

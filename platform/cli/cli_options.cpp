@@ -10,6 +10,7 @@
 #include "host/draw_results.h"
 #include "host/parse_number.h"
 #include "io/error_line.h"
+#include "quads/display_homography.h"
 #include "tracking/quad_tracker.h"
 
 namespace qt::cli {
@@ -53,40 +54,60 @@ std::string show_deg(angle_t a) {
     return buf;
 }
 
-// An integer flag stored in a uint8_t, uint16_t, uint32_t or uint64_t field.
+// An integer flag stored in a uint8_t, uint16_t, uint32_t or uint64_t field, within `range`.
 template <typename T>
-Option integer(const char* name, const char* value, const char* help, long lo, long hi,
-               std::function<T&(DetectOptions&)> field) {
-    return integer_flag<T, DetectOptions>(name, value, help, lo, hi, field, Command::detect);
+Option integer(const char* name, const char* value, const char* what, const SettingRange& range,
+               std::function<T&(DetectOptions&)> field, const char* note = "") {
+    return integer_flag<T, DetectOptions>(name, value, what, range, field, Command::detect, note);
 }
 
-Option decimal(const char* name, const char* value, const char* help, double lo, double hi,
-               std::function<q16_16&(DetectOptions&)> field) {
-    return {name, value, help, [field](DetectOptions o) { return show_q16(field(o)); },
-            [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
-                return parse_q16(t, lo, hi, field(o), e);
-            }};
+// A decimal flag stored as q16_16 (rounded to the nearest 2^-16), within `range`.
+Option decimal(const char* name, const char* value, const char* what, const SettingRange& range,
+               std::function<q16_16&(DetectOptions&)> field, const char* note = "") {
+    return {name,
+            value,
+            described(what, range, note),
+            [field](DetectOptions o) { return show_q16(field(o)); },
+            [field, range](const std::string& t, DetectOptions& o, std::string& e) {
+                return parse_q16(t, range_lo(range), range_hi(range), field(o), e);
+            },
+            Command::detect,
+            &range};
 }
 
-Option degrees(const char* name, const char* help, double lo, double hi,
+// An angle flag in degrees (range's unit), stored as a binary angle.
+Option degrees(const char* name, const char* what, const SettingRange& range,
                std::function<angle_t&(DetectOptions&)> field) {
-    return {name, "DEG", help, [field](DetectOptions o) { return show_deg(field(o)); },
-            [field, lo, hi](const std::string& t, DetectOptions& o, std::string& e) {
+    return {name,
+            "DEG",
+            described(what, range),
+            [field](DetectOptions o) { return show_deg(field(o)); },
+            [field, range](const std::string& t, DetectOptions& o, std::string& e) {
                 q16_16 deg;
-                if (!parse_q16(t, lo, hi, deg, e)) return false;
+                if (!parse_q16(t, range_lo(range), range_hi(range), deg, e)) return false;
                 field(o) = angle_from_deg(deg);
                 return true;
-            }};
+            },
+            Command::detect,
+            &range};
 }
 
-const FlagTable<DetectOptions, Command>& table() {
+}  // namespace
+
+const FlagTable<DetectOptions, Command>& detect_flags() {
+    const HoughRanges& hough = kHoughRanges;
+    const ClusterRanges& cluster = kClusterRanges;
+    const QuadRanges& quads = kQuadRanges;
+    const RefineRanges& refine = kRefineRanges;
+    const QuadTrackerRanges& track = kQuadTrackerRanges;
     // Command::detect: every command's; track_only(): track's only.
     static const FlagTable<DetectOptions, Command> options{
         {
             integer<uint16_t>(
                 "edge-threshold", "LEVEL",
-                "edge pixel: L1 gradient magnitude |gx|+|gy| at least this, grey levels, 1..510", 1,
-                510, [](DetectOptions& o) -> uint16_t& { return o.params.lines.edge_threshold; }),
+                "edge pixel: L1 gradient magnitude |gx|+|gy| at least this",
+                kLineRanges.edge_threshold,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.edge_threshold; }),
             {"edge-front-end", "NAME",
              "threshold_nms (ours: one threshold and NMS on the raw rows) or canny (the paper's: "
              "Gaussian smoothing, NMS, hysteresis --edge-threshold..--canny-high)",
@@ -103,132 +124,131 @@ const FlagTable<DetectOptions, Command>& table() {
                  return false;
              }},
             integer<uint16_t>(
-                "canny-high", "LEVEL",
-                "canny: hysteresis high threshold, grey levels, 0..510 (0: twice --edge-threshold)",
-                0, 510, [](DetectOptions& o) -> uint16_t& { return o.params.lines.canny_high; }),
+                "canny-high", "LEVEL", "canny: hysteresis high threshold", kLineRanges.canny_high,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.canny_high; },
+                "0: twice --edge-threshold"),
             integer<uint16_t>(
-                "theta-bins", "N",
-                "Hough accumulator angle bins over 180 degrees (90 = 2 degrees each), 2..90", 2, 90,
-                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.theta_bins; }),
+                "theta-bins", "N", "Hough accumulator angle bins over 180 degrees",
+                hough.theta_bins,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.theta_bins; },
+                "90 = 2 degrees each"),
             {"rho", "PX",
-             "Hough accumulator distance resolution, pixels: 2 or 4 (the VGA build's accumulator "
-             "has no room for 1)",
+             described("Hough accumulator distance resolution", hough.rho_step,
+                       "2 or 4: the VGA build's accumulator has no room for 1"),
              [](DetectOptions o) { return std::to_string(o.params.lines.hough.rho_step); },
              [](const std::string& t, DetectOptions& o, std::string& e) {
                  long v = 0;
-                 if (!host::parse_int(t, 2, 4, v, e)) return false;
+                 if (!parse_in_range(t, kHoughRanges.rho_step, v, e)) return false;
                  if (v == 3) {
                      e = "3 is not 2 or 4";
                      return false;
                  }
                  o.params.lines.hough.rho_step = static_cast<uint16_t>(v);
                  return true;
-             }},
+             },
+             Command::detect, &hough.rho_step},
             integer<uint16_t>(
                 "threshold", "VOTES",
-                "PPHT vote threshold: votes a bin needs before its line is followed, 1..255", 1,
-                255, [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.threshold; }),
+                "PPHT vote threshold: votes a bin needs before its line is followed",
+                hough.threshold,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.threshold; }),
             integer<uint16_t>(
-                "min-line-length", "PX", "PPHT minimum line length, pixels, 2..2048", 2, 2048,
+                "min-line-length", "PX", "PPHT minimum line length", hough.min_line_length,
                 [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.min_line_length; }),
             integer<uint16_t>(
-                "max-gap", "PX", "PPHT maximum gap inside a line, pixels, 0..255", 0, 255,
+                "max-gap", "PX", "PPHT maximum gap inside a line", hough.max_line_gap,
                 [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_line_gap; }),
             integer<uint16_t>(
                 "vote-window", "DEG",
-                "a point votes for normals within +-DEG of its gradient direction, degrees, 1..90 "
-                "(90 = all)",
-                1, 90,
-                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.vote_window_deg; }),
+                "a point votes for normals within +-DEG of its gradient direction",
+                hough.vote_window_deg,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.vote_window_deg; },
+                "90 = all"),
             integer<uint16_t>(
-                "corridor", "PX",
-                "PPHT line following: pixels either side of the line searched, 0..4", 0, 4,
+                "corridor", "PX", "PPHT line following: pixels either side of the line searched",
+                hough.corridor,
                 [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.corridor; }),
             integer<uint32_t>(
-                "max-walk-steps", "N", "PPHT line-following budget per frame, steps, 1..100000000",
-                1, 100000000,
+                "max-walk-steps", "N", "PPHT line-following budget per frame", hough.max_walk_steps,
                 [](DetectOptions& o) -> uint32_t& { return o.params.lines.hough.max_walk_steps; }),
             integer<uint16_t>(
-                "max-voters", "N",
-                "PPHT voting budget per frame: edge points that vote, 0..65535 (0: half the edge "
-                "capacity, 2048 at QVGA, 8192 at VGA)",
-                0, 65535,
-                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_voters; }),
+                "max-voters", "N", "PPHT voting budget per frame: edge points that vote",
+                hough.max_voters,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_voters; },
+                "0: half the edge capacity, 2048 at QVGA, 8192 at VGA"),
             integer<uint64_t>(
-                "seed", "N", "PPHT visiting order seed, 0..2147483647", 0, 2147483647,
+                "seed", "N", "PPHT visiting order seed", hough.seed,
                 [](DetectOptions& o) -> uint64_t& { return o.params.lines.hough.seed; }),
             decimal("cluster-distance", "PX",
-                    "clustering similarity threshold S(li,lj) = |Ci - Cj|, pixels, 0..1000", 0,
-                    1000,
+                    "clustering similarity threshold S(li,lj) = |Ci - Cj|", cluster.distance,
                     [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.distance; }),
-            degrees("cluster-angle",
-                    "clustering: largest orientation difference of merged lines, degrees, 0..90", 0,
-                    90,
+            degrees("cluster-angle", "clustering: largest orientation difference of merged lines",
+                    cluster.max_angle,
                     [](DetectOptions& o) -> angle_t& { return o.params.lines.cluster.max_angle; }),
-            decimal(
-                "cluster-gap", "PX",
-                "clustering: largest gap between merged segments along the line, pixels, 0..2048",
-                0, 2048, [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.gap; }),
+            decimal("cluster-gap", "PX",
+                    "clustering: largest gap between merged segments along the line", cluster.gap,
+                    [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.gap; }),
             decimal("cluster-offset", "PX",
                     "clustering: ends of the shorter segment at most this far from the longer "
-                    "one's line, pixels, 0..1000",
-                    0, 1000,
+                    "one's line",
+                    cluster.offset,
                     [](DetectOptions& o) -> q16_16& { return o.params.lines.cluster.offset; }),
             decimal(
                 "corner-join-distance", "PX",
-                "line ends move to the lines' intersection when at most this far from it, pixels, "
-                "0..100",
-                0, 100,
+                "line ends move to the lines' intersection when at most this far from it",
+                cluster.corner_distance,
                 [](DetectOptions& o) -> q16_16& { return o.params.lines.corners.max_distance; }),
             degrees("corner-join-angle",
-                    "line ends are joined only for lines at least this far from parallel, degrees, "
-                    "0..90",
-                    0, 90,
+                    "line ends are joined only for lines at least this far from parallel",
+                    cluster.corner_angle,
                     [](DetectOptions& o) -> angle_t& { return o.params.lines.corners.min_angle; }),
-            degrees("parallel-tolerance",
-                    "rule 1: largest angle between opposite sides, degrees, 0..45", 0, 45,
+            degrees("parallel-tolerance", "rule 1: largest angle between opposite sides",
+                    quads.parallel_tolerance,
                     [](DetectOptions& o) -> angle_t& { return o.params.quads.parallel_tolerance; }),
             degrees("perpendicular-tolerance",
-                    "rule 2: largest deviation of adjacent sides from 90 degrees, degrees, 0..60",
-                    0, 60,
+                    "rule 2: largest deviation of adjacent sides from 90 degrees",
+                    quads.perpendicular_tolerance,
                     [](DetectOptions& o) -> angle_t& {
                         return o.params.quads.perpendicular_tolerance;
                     }),
-            decimal("corner-margin", "PX",
-                    "rule 3: corners at least this far inside the frame, pixels, 0..1000", 0, 1000,
+            decimal("corner-margin", "PX", "rule 3: corners at least this far inside the frame",
+                    quads.corner_margin,
                     [](DetectOptions& o) -> q16_16& { return o.params.quads.corner_margin; }),
-            decimal("min-side", "PX",
-                    "rule 4: shortest side, pixels, 0..2048 (0: a tenth of the frame height)", 0,
-                    2048,
-                    [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_length; }),
-            decimal("max-side", "PX", "rule 4: longest side, pixels, 1..2048", 1, 2048,
+            decimal(
+                "min-side", "PX", "rule 4: shortest side", quads.min_side_length,
+                [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_length; },
+                "0: a tenth of the frame height"),
+            decimal("max-side", "PX", "rule 4: longest side", quads.max_side_length,
                     [](DetectOptions& o) -> q16_16& { return o.params.quads.max_side_length; }),
             decimal("aspect-tolerance", "FACTOR",
-                    "rule 5: largest factor between the side ratio and the display's, 1..10", 1, 10,
+                    "rule 5: largest factor between the side ratio and the display's",
+                    quads.aspect_tolerance,
                     [](DetectOptions& o) -> q16_16& { return o.params.quads.aspect_tolerance; }),
             decimal(
                 "tilted-aspect-tolerance", "FACTOR",
                 "rule 5: the larger factor allowed when opposite sides converge by at least "
-                "--perspective-convergence (a tilted board), 1..10",
-                1, 10,
+                "--perspective-convergence (a tilted board)",
+                quads.tilted_aspect_tolerance,
                 [](DetectOptions& o) -> q16_16& { return o.params.quads.tilted_aspect_tolerance; }),
             degrees("perspective-convergence",
                     "rule 5: least angle between a pair of opposite sides for "
-                    "--tilted-aspect-tolerance, degrees, 0..90",
-                    0, 90,
+                    "--tilted-aspect-tolerance",
+                    quads.perspective_convergence,
                     [](DetectOptions& o) -> angle_t& {
                         return o.params.quads.perspective_convergence;
                     }),
             decimal("min-coverage", "FRACTION",
-                    "each side covered by its line's segment at least this much, 0..1", 0, 1,
+                    "each side covered by its line's segment at least this much",
+                    quads.min_side_coverage,
                     [](DetectOptions& o) -> q16_16& { return o.params.quads.min_side_coverage; }),
             decimal("min-score", "FRACTION",
-                    "the four sides together covered at least this share of the perimeter, 0..1", 0,
-                    1, [](DetectOptions& o) -> q16_16& { return o.params.quads.min_score; }),
-            decimal(
-                "collinear-distance", "PX",
-                "lines with both ends this close to a side's line also cover it, pixels, 0..100", 0,
-                100, [](DetectOptions& o) -> q16_16& { return o.params.quads.collinear_distance; }),
+                    "the four sides together covered at least this share of the perimeter",
+                    quads.min_score,
+                    [](DetectOptions& o) -> q16_16& { return o.params.quads.min_score; }),
+            decimal("collinear-distance", "PX",
+                    "lines with both ends this close to a side's line also cover it",
+                    quads.collinear_distance,
+                    [](DetectOptions& o) -> q16_16& { return o.params.quads.collinear_distance; }),
             {"contrast", "bright|dark|any",
              "the board is brighter (or darker) than its surroundings on every side, or either",
              [](DetectOptions o) {
@@ -250,8 +270,9 @@ const FlagTable<DetectOptions, Command>& table() {
                  return true;
              }},
             {"display", "WxH",
-             "display area in display pixels: its aspect W/H is rule 5's ratio, and the display "
-             "homography maps it, 1..4096 each",
+             described("display area: its aspect W/H is rule 5's ratio, and the display "
+                       "homography maps it",
+                       kDisplaySizeRange, "each of W and H"),
              [](DetectOptions o) {
                  return std::to_string(o.display_width) + "x" + std::to_string(o.display_height);
              },
@@ -262,14 +283,15 @@ const FlagTable<DetectOptions, Command>& table() {
                      e = "'" + t + "' is not WxH";
                      return false;
                  }
-                 if (!host::parse_int(t.substr(0, x), 1, 4096, w, e) ||
-                     !host::parse_int(t.substr(x + 1), 1, 4096, h, e))
+                 if (!parse_in_range(t.substr(0, x), kDisplaySizeRange, w, e) ||
+                     !parse_in_range(t.substr(x + 1), kDisplaySizeRange, h, e))
                      return false;
                  o.display_width = static_cast<uint16_t>(w);
                  o.display_height = static_cast<uint16_t>(h);
                  o.params.quads.display_aspect = q16_16::from_ratio(w, h);
                  return true;
-             }},
+             },
+             Command::detect, &kDisplaySizeRange},
             {"complete-hidden-side", "yes|no",
              "a side hidden along most of its length is completed from its two neighbours",
              [](DetectOptions o) {
@@ -278,43 +300,40 @@ const FlagTable<DetectOptions, Command>& table() {
              [](const std::string& t, DetectOptions& o, std::string& e) {
                  return parse_yes_no(t, o.params.quads.complete_hidden_side, e);
              }},
-            decimal("refine-band", "PX",
-                    "side refinement: edge points within this of a side, first pass, pixels, 0..8 "
-                    "(0: no refinement, the sides stay the lines the rules chose)",
-                    0, 8, [](DetectOptions& o) -> q16_16& { return o.params.refine.band; }),
-            decimal("refine-fine-band", "PX",
-                    "side refinement: the same, second pass, pixels, 0.5..8", 0.5, 8,
+            decimal(
+                "refine-band", "PX",
+                "side refinement: edge points within this of a side, first pass", refine.band,
+                [](DetectOptions& o) -> q16_16& { return o.params.refine.band; },
+                "0: no refinement, the sides stay the lines the rules chose"),
+            decimal("refine-fine-band", "PX", "side refinement: the same, second pass",
+                    refine.fine_band,
                     [](DetectOptions& o) -> q16_16& { return o.params.refine.fine_band; }),
-            {"verify", "yes|no",
-             "keep only quadrangles whose sides show edge evidence (the --*-evidence limits)",
-             [](DetectOptions o) { return std::string(o.params.refine.verify ? "yes" : "no"); },
-             [](const std::string& t, DetectOptions& o, std::string& e) {
-                 return parse_yes_no(t, o.params.refine.verify, e);
-             }},
-            integer<uint8_t>("side-evidence", "PERCENT",
-                             "each side: edge evidence along at least this share of it, %, 0..100",
-                             0, 100,
-                             [](DetectOptions& o) -> uint8_t& {
-                                 return o.params.refine.min_side_evidence_percent;
-                             }),
+            integer<uint8_t>(
+                "side-evidence", "PERCENT",
+                "each side: edge evidence along at least this share of it, next to both corners",
+                refine.min_side_evidence_percent,
+                [](DetectOptions& o) -> uint8_t& {
+                    return o.params.refine.min_side_evidence_percent;
+                }),
             integer<uint8_t>(
                 "hidden-side-evidence", "PERCENT",
-                "a completed side: edge evidence along at least this share of it, %, 0..100", 0,
-                100,
+                "a completed side: edge evidence along at least this share of it, next to both "
+                "corners",
+                refine.min_hidden_side_evidence_percent,
                 [](DetectOptions& o) -> uint8_t& {
                     return o.params.refine.min_hidden_side_evidence_percent;
                 }),
             integer<uint8_t>(
                 "evidence", "PERCENT",
-                "the four sides together: edge evidence along at least this share, %, 0..100", 0,
-                100,
+                "the four sides together: edge evidence along at least this share",
+                refine.min_evidence_percent,
                 [](DetectOptions& o) -> uint8_t& { return o.params.refine.min_evidence_percent; }),
             integer<uint8_t>(
                 "max-inside-edges", "PERCENT",
                 "a kept quadrangle has at most this share of the 2x2 px cells inside it holding "
-                "an edge point (farther than --inside-margin from its sides), % at 240 rows, "
-                "scaled by sqrt(240 / rows), 0..100 (0: not tested)",
-                0, 100,
+                "an edge point (farther than --inside-margin from its sides), at 240 rows, "
+                "scaled by sqrt(240 / rows)",
+                refine.max_inside_edge_cells_percent,
                 [](DetectOptions& o) -> uint8_t& {
                     return o.params.refine.max_inside_edge_cells_percent;
                 }),
@@ -322,20 +341,20 @@ const FlagTable<DetectOptions, Command>& table() {
                 "max-lines-across", "N",
                 "a kept quadrangle is crossed by at most this many lines, each inside it over at "
                 "least half its shortest side (a pattern's lines cross it, a board's print does "
-                "not), 0..255 (255: not tested)",
-                0, 255,
+                "not)",
+                refine.max_lines_across,
                 [](DetectOptions& o) -> uint8_t& { return o.params.refine.max_lines_across; }),
             integer<uint8_t>(
                 "max-junction-corners", "N",
                 "a kept quadrangle has at most this many corners where both its sides run on past "
-                "it (a checkerboard's square), 0..4 (4: not tested)",
-                0, 4,
+                "it (a checkerboard's square)",
+                refine.max_junction_corners,
                 [](DetectOptions& o) -> uint8_t& { return o.params.refine.max_junction_corners; }),
             decimal("inside-margin", "PX",
-                    "edge points this close to a side are not counted inside, pixels, 0..16", 0, 16,
+                    "edge points this close to a side are not counted inside", refine.inside_margin,
                     [](DetectOptions& o) -> q16_16& { return o.params.refine.inside_margin; }),
-            integer<uint16_t>("max-quads", "N", "quadrangles reported, best first, 1..4", 1,
-                              host::HostBoardDetector::max_quads(),
+            integer<uint16_t>("max-quads", "N", "quadrangles reported, best first",
+                              host::HostBoardDetector::quads_range,
                               [](DetectOptions& o) -> uint16_t& { return o.max_quads; }),
             bin_flag<DetectOptions, Command>(
                 [](DetectOptions& o) -> uint8_t& { return o.bin; }, Command::detect,
@@ -382,8 +401,8 @@ const FlagTable<DetectOptions, Command>& table() {
                             return true;
                         }}),
             track_only(integer<uint32_t>(
-                "draw-every", "N", "track --draw: draw frames 0, N, 2N, ..., frames, 1..100000", 1,
-                100000, [](DetectOptions& o) -> uint32_t& { return o.draw_every; })),
+                "draw-every", "N", "track --draw: draw frames 0, N, 2N, ...", host::kDrawEveryRange,
+                [](DetectOptions& o) -> uint32_t& { return o.draw_every; })),
             // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
             track_only(
                 {"model", "paper|turn",
@@ -404,31 +423,30 @@ const FlagTable<DetectOptions, Command>& table() {
                      return true;
                  }}),
             track_only(integer<uint8_t>(
-                "filters", "N",
-                "paper model: Kalman filters per line, each on its own origin, 1..3 (3 = 3KF)", 1,
-                3, [](DetectOptions& o) -> uint8_t& { return o.track.filters; })),
+                "filters", "N", "paper model: Kalman filters per line, each on its own origin",
+                track.filters, [](DetectOptions& o) -> uint8_t& { return o.track.filters; },
+                "3 = 3KF")),
             track_only(degrees("gate-angle",
                                "a detected line serves a tracked side only within this angle of "
-                               "its prediction, degrees, 0..90",
-                               0, 90,
+                               "its prediction",
+                               track.gate_angle,
                                [](DetectOptions& o) -> angle_t& { return o.track.gate_angle; })),
             track_only(decimal("gate-distance", "PX",
                                "a detected line serves a tracked side only with both ends within "
-                               "this distance of its prediction, pixels, 0..1000",
-                               0, 1000,
+                               "this distance of its prediction",
+                               track.gate_distance,
                                [](DetectOptions& o) -> q16_16& { return o.track.gate_distance; })),
             track_only(integer<uint8_t>(
                 "max-predicted", "N",
-                "a side may be predicted this many frames in a row before the track is dropped, "
-                "frames, 0..255",
-                0, 255, [](DetectOptions& o) -> uint8_t& { return o.track.max_predicted; })),
+                "a side may be predicted this many frames in a row before the track is dropped",
+                track.max_predicted,
+                [](DetectOptions& o) -> uint8_t& { return o.track.max_predicted; },
+                "off: never for that reason")),
         },
         Command::detect,
         34};
     return options;
 }
-
-}  // namespace
 
 TrackOptions::TrackOptions() {
     const QuadTrackerParams d;
@@ -443,7 +461,7 @@ DetectOptions::DetectOptions() {
     params.quads.display_aspect = q16_16::from_ratio(display_width, display_height);
 }
 
-std::string options_help(Command command) { return table().help(command); }
+std::string options_help(Command command) { return detect_flags().help(command); }
 
 int parse_command_line(const std::vector<std::string>& args, Command command,
                        const std::string& usage, DetectOptions& options, std::string& positional,
@@ -453,7 +471,7 @@ int parse_command_line(const std::vector<std::string>& args, Command command,
     const char* what_upper = command == Command::detect ? "IMAGE" : "SEQUENCE";
     std::vector<std::string> given;
     positional.clear();
-    const int parsed = table().parse(args, command, name, usage, options, given, out, err);
+    const int parsed = detect_flags().parse(args, command, name, usage, options, given, out, err);
     if (parsed >= 0) return parsed;
     if (given.size() > 1) {
         qt::io::print_error_line(err, "quadtrack %s: one %s only, got '%s' and '%s'", name, what,

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/flag_table.h"
 #include "host/board_runner.h"
 #include "quads/board_detector.h"
 #include "tracking/line_tracker.h"
@@ -47,8 +48,11 @@ struct DetectOptions {
     DetectOptions();  // params.quads.display_aspect follows the display size
 };
 
-// The help lines of every flag of `command`: "  --name VALUE   text (unit, range; default d)".
+// The help lines of every flag of `command`: "  --name VALUE   text, unit, range (default d)".
 std::string options_help(Command command = Command::detect);
+
+// detect's and track's flags (each flag's `command` says which), for the range test.
+const FlagTable<DetectOptions, Command>& detect_flags();
 
 // Parses a command's arguments (everything after its name): flags of `command` as --name VALUE
 // or --name=VALUE, and exactly one positional argument (detect's IMAGE, track's SEQUENCE) into

@@ -22,44 +22,47 @@ std::string show_float(double v) {
     return buf;
 }
 
-// A flag of `target` only unless `command` says homography (then both commands').
-Option real(const char* name, const char* value, const char* help, double lo, double hi,
+// A decimal flag within `range`, of `target` only unless `command` says homography (then both
+// commands').
+Option real(const char* name, const char* value, const char* what, const SettingRange& range,
             std::function<float&(TargetOptions&)> field,
-            GeometryCommand command = GeometryCommand::target) {
+            GeometryCommand command = GeometryCommand::target, const char* note = "") {
     return {name,
             value,
-            help,
+            described(what, range, note),
             [field](TargetOptions o) { return show_float(field(o)); },
-            [field, lo, hi](const std::string& t, TargetOptions& o, std::string& e) {
+            [field, range](const std::string& t, TargetOptions& o, std::string& e) {
                 double v = 0;
-                if (!host::parse_double(t, lo, hi, v, e)) return false;
+                if (!parse_in_range(t, range, v, e)) return false;
                 field(o) = static_cast<float>(v);
                 return true;
             },
-            command};
+            command,
+            &range};
 }
 
 template <typename T>
-Option integer(const char* name, const char* value, const char* help, long lo, long hi,
+Option integer(const char* name, const char* value, const char* what, const SettingRange& range,
                std::function<T&(TargetOptions&)> field,
-               GeometryCommand command = GeometryCommand::target) {
-    return integer_flag<T, TargetOptions>(name, value, help, lo, hi, field, command);
+               GeometryCommand command = GeometryCommand::target, const char* note = "") {
+    return integer_flag<T, TargetOptions>(name, value, what, range, field, command, note);
 }
 
-// A score -1..1 stored as Q15.
-Option score_q15(const char* name, const char* help,
+// An NCC score within `range` (-1..1) stored as Q15.
+Option score_q15(const char* name, const char* what, const SettingRange& range,
                  std::function<int16_t&(TargetOptions&)> field) {
     return {name,
             "NCC",
-            help,
+            described(what, range),
             [field](TargetOptions o) { return show_float(field(o) / 32768.0); },
-            [field](const std::string& t, TargetOptions& o, std::string& e) {
+            [field, range](const std::string& t, TargetOptions& o, std::string& e) {
                 double v = 0;
-                if (!host::parse_double(t, -1.0, 1.0, v, e)) return false;
+                if (!parse_in_range(t, range, v, e)) return false;
                 field(o) = static_cast<int16_t>(std::lround(std::fmin(v * 32768.0, 32767.0)));
                 return true;
             },
-            GeometryCommand::homography};
+            GeometryCommand::homography,
+            &range};
 }
 
 // A flag naming one of two words (value: "yes|no" for the help); `field` is true for the first.
@@ -138,8 +141,12 @@ bool parse_roi(const std::string& t, TargetOptions& o, std::string& e) {
     return true;
 }
 
+}  // namespace
+
 // GeometryCommand::homography: both commands' flags; GeometryCommand::target: target's only.
-const FlagTable<TargetOptions, GeometryCommand>& table() {
+const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
+    const TargetKalmanRanges& kalman = kTargetKalmanRanges;
+    const TargetTrackerRanges& tracker = kTargetTrackerRanges;
     static const FlagTable<TargetOptions, GeometryCommand> options{
         {
             {"roi", "X,Y,W,H",
@@ -162,8 +169,8 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                  return true;
              },
              GeometryCommand::target},
-            integer<uint32_t>("draw-every", "N", "--draw: frames 0, N, 2N, ..., frames, 1..100000",
-                              1, 100000,
+            integer<uint32_t>("draw-every", "N", "--draw: frames 0, N, 2N, ...",
+                              host::kDrawEveryRange,
                               [](TargetOptions& o) -> uint32_t& { return o.draw_every; }),
             {"method", "NAME",
              "fused (the paper's method), filter_only, homography_only or template_only",
@@ -186,19 +193,19 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                    [](TargetOptions& o) -> bool& { return o.config.tracker.reset; }),
             bin_flag<TargetOptions, GeometryCommand>(
                 [](TargetOptions& o) -> uint8_t& { return o.bin; }, GeometryCommand::homography),
-            real("q-pos", "PX2", "Kalman Q's position variance per frame, px^2, 0..10000", 0, 10000,
+            real("q-pos", "PX2", "Kalman Q's position variance per frame", kalman.q_pos,
                  [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_pos; }),
-            real("q-vel", "PX2", "Kalman Q's velocity variance per frame, (px/frame)^2, 0..1000", 0,
-                 1000, [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_vel; }),
-            real("r", "PX2", "Kalman R: template match variance, px^2, 0.01..10000", 0.01, 10000,
+            real("q-vel", "PX2", "Kalman Q's velocity variance per frame", kalman.q_vel,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.kalman.q_vel; }),
+            real("r", "PX2", "Kalman R: template match variance", kalman.r,
                  [](TargetOptions& o) -> float& { return o.config.tracker.kalman.r; }),
-            real("gate-nds", "D",
-                 "NDS gate of equation (6): a match is used when D_nds <= this, 0.01..1e6", 0.01,
-                 1e6, [](TargetOptions& o) -> float& { return o.config.tracker.gate_nds; }),
+            real("gate-nds", "D", "NDS gate of equation (6): a match is used when D_nds <= this",
+                 tracker.gate_nds,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.gate_nds; }),
             real("gate-rep", "PX",
                  "capped D_rep gate of equation (7): homography trusted when the capped RMS over "
-                 "all matched pairs <= this, px, 0.01..100",
-                 0.01, 100,
+                 "all matched pairs <= this",
+                 tracker.gate_rep_px,
                  [](TargetOptions& o) -> float& { return o.config.tracker.gate_rep_px; }),
             choice<TargetFormulation>(
                 "formulation",
@@ -221,7 +228,7 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                 "at (2 inlier-px)^2, <= --gate-rep) or paper (the sum, <= --th-rep)",
                 {RepGate::capped, RepGate::paper}, rep_gate_name,
                 [](TargetOptions& o) -> RepGate& { return o.config.tracker.rep_gate; }),
-            real("th-rep", "PX2", "paper D_rep gate: the sum over the pairs, px^2, 0..1e9", 0, 1e9,
+            real("th-rep", "PX2", "paper D_rep gate: the sum over the pairs", tracker.th_rep_px2,
                  [](TargetOptions& o) -> float& { return o.config.tracker.th_rep_px2; }),
             choice<TargetDetector>(
                 "detector",
@@ -229,29 +236,32 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                 "paper's top-hat and clustering)",
                 {TargetDetector::ncc_template, TargetDetector::morphological}, target_detector_name,
                 [](TargetOptions& o) -> TargetDetector& { return o.config.detector; }),
-            real("reset-nds", "D", "reset when D_nds <= this ..., 0..1e6", 0, 1e6,
+            real("reset-nds", "D", "reset when D_nds <= this ...", tracker.reset_nds,
                  [](TargetOptions& o) -> float& { return o.config.tracker.reset_nds; }),
-            real("reset-det-s", "PX4", "... and det S <= this, px^4, 0..1e12", 0, 1e12,
+            real("reset-det-s", "PX4", "... and det S <= this", tracker.reset_det_s,
                  [](TargetOptions& o) -> float& { return o.config.tracker.reset_det_s; }),
-            real("min-score", "NCC", "a template match counts when its NCC >= this, -1..1", -1, 1,
+            real("min-score", "NCC", "a template match counts when its NCC >= this",
+                 tracker.min_score,
                  [](TargetOptions& o) -> float& { return o.config.tracker.min_score; }),
-            real("max-radius", "PX",
-                 "largest search window half-side around the prediction, px, 1..48", 1, 48,
+            real("max-radius", "PX", "largest search window half-side around the prediction",
+                 tracker.max_radius_px,
                  [](TargetOptions& o) -> float& { return o.config.tracker.max_radius_px; }),
             integer<uint16_t>(
-                "max-unseen", "FRAMES", "lost after this many frames without a match, 1..65535", 1,
-                65535, [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
+                "max-unseen", "FRAMES", "lost after this many frames without a match",
+                tracker.max_unseen,
+                [](TargetOptions& o) -> uint16_t& { return o.config.tracker.max_unseen; }),
             real("max-outside", "FRAMES",
                  "lost when the estimate is more than this many frame widths (heights) outside "
-                 "the image, 0..100",
-                 0, 100, [](TargetOptions& o) -> float& { return o.config.tracker.max_outside; }),
+                 "the image",
+                 tracker.max_outside,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.max_outside; }),
             integer<uint16_t>(
                 "coast-fit", "FRAMES",
                 "leaving the image, the estimate coasts on the track (--coast-track) fitted to "
-                "the measurements of this many last frames, 0..63 (0: the filter's velocity; "
-                "--formulation reference only)",
-                0, TargetTracker::kMaxCoastFitFrames,
-                [](TargetOptions& o) -> uint16_t& { return o.config.tracker.coast_fit_frames; }),
+                "the measurements of this many last frames",
+                tracker.coast_fit_frames,
+                [](TargetOptions& o) -> uint16_t& { return o.config.tracker.coast_fit_frames; },
+                GeometryCommand::target, "0: the filter's velocity; --formulation reference only"),
             either("coast-track", "perspective|line", "perspective", "line",
                    "the coasting track: perspective (ours: (a + b t)/(1 + c t), a target at "
                    "constant velocity on the ground) or line (constant velocity in the reference "
@@ -270,28 +280,28 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
                 GeometryCommand::homography),
             integer<uint16_t>(
                 "search-radius", "PX",
-                "corner matching: candidates within this of the expected position, px, 1..128", 1,
-                128,
+                "corner matching: candidates within this of the expected position",
+                kMatchRanges.search_radius_px,
                 [](TargetOptions& o) -> uint16_t& {
                     return o.config.geometry.match.search_radius_px;
                 },
                 GeometryCommand::homography),
             score_q15(
-                "min-match", "corner matching: least NCC of a match, -1..1",
+                "min-match", "corner matching: least NCC of a match", kMatchRanges.min_score,
                 [](TargetOptions& o) -> int16_t& { return o.config.geometry.match.min_score_q15; }),
             real(
-                "inlier-px", "PX", "RANSAC inlier threshold on the transfer error, px, 0.05..50",
-                0.05, 50,
+                "inlier-px", "PX", "RANSAC inlier threshold on the transfer error",
+                kRansacRanges.inlier_px,
                 [](TargetOptions& o) -> float& { return o.config.geometry.ransac.inlier_px; },
                 GeometryCommand::homography),
             integer<uint16_t>(
-                "max-iterations", "N", "RANSAC hypotheses at most, 1..65535", 1, 65535,
+                "max-iterations", "N", "RANSAC hypotheses at most", kRansacRanges.max_iterations,
                 [](TargetOptions& o) -> uint16_t& {
                     return o.config.geometry.ransac.max_iterations;
                 },
                 GeometryCommand::homography),
             integer<uint64_t>(
-                "seed", "N", "RANSAC's PRNG seed, 0..2^31-1", 0, 2147483647L,
+                "seed", "N", "RANSAC's PRNG seed", kRansacRanges.seed,
                 [](TargetOptions& o) -> uint64_t& { return o.config.geometry.ransac.seed; },
                 GeometryCommand::homography),
         },
@@ -299,8 +309,6 @@ const FlagTable<TargetOptions, GeometryCommand>& table() {
         28};
     return options;
 }
-
-}  // namespace
 
 TargetPipelineParams default_target_config() {
     TargetPipelineParams c;
@@ -312,7 +320,7 @@ TargetPipelineParams default_target_config() {
 
 TargetOptions::TargetOptions() : config(default_target_config()) {}
 
-std::string target_options_help(GeometryCommand command) { return table().help(command); }
+std::string target_options_help(GeometryCommand command) { return target_flags().help(command); }
 
 int parse_target_command_line(const std::vector<std::string>& args, GeometryCommand command,
                               const std::string& usage, TargetOptions& options,
@@ -320,7 +328,8 @@ int parse_target_command_line(const std::vector<std::string>& args, GeometryComm
                               std::FILE* err) {
     const bool target = command == GeometryCommand::target;
     const char* name = target ? "target" : "homography";
-    const int parsed = table().parse(args, command, name, usage, options, positional, out, err);
+    const int parsed =
+        target_flags().parse(args, command, name, usage, options, positional, out, err);
     if (parsed >= 0) return parsed;
     const size_t wanted = target ? 1 : 2;
     if (positional.size() != wanted) {

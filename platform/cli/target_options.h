@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/flag_table.h"
 #include "target/float/target_pipeline.h"
 
 namespace qt::cli {
@@ -38,8 +39,11 @@ struct TargetOptions {
 // The pipeline's defaults for the CLI (HarrisParams for VGA-sized frames, the paper's Q).
 TargetPipelineParams default_target_config();
 
-// The help lines of every flag of `command`: "  --name VALUE   text (unit, range; default d)".
+// The help lines of every flag of `command`: "  --name VALUE   text, unit, range (default d)".
 std::string target_options_help(GeometryCommand command);
+
+// homography's and target's flags (each flag's `command` says which), for the range test.
+const FlagTable<TargetOptions, GeometryCommand>& target_flags();
 
 // Parses a command's arguments into `options` and its positional arguments (target: exactly
 // one SEQUENCE; homography: exactly two images A B). Returns -1 when the command should run;

@@ -58,7 +58,10 @@ q16_16 evidence_share(const TrackedQuad& quad, const RefineParams& params,
     const EdgeList& edges = capacity == DetectorCapacity::qvga ? qvga_detector.lines().edges()
                                                                : vga_detector.lines().edges();
     RefineParams scored = params;
-    scored.verify = false;  // scored, never turned down
+    // Scored, never turned down.
+    scored.min_side_evidence_percent = kCheckOff;
+    scored.min_hidden_side_evidence_percent = kCheckOff;
+    scored.min_evidence_percent = kCheckOff;
     Quad q{};
     const Segment* lines[4];
     for (int i = 0; i < 4; ++i) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/setting_range.h"
 #include "io/grey_image.h"
 #include "io/overlay.h"
 #include "quads/quad_detector.h"
@@ -28,6 +29,9 @@ void draw_tracked(io::RgbImage& pic, const TrackedQuad& t);
 // The target's w × h box centred at (x, y) px: solid green when measured or reacquired, dashed
 // orange when predicted or out of view, red when lost.
 void draw_target(io::RgbImage& pic, double x, double y, int w, int h, TargetState state);
+
+// --draw-every N of a sequence command: frames 0, N, 2N, ... are drawn.
+inline constexpr SettingRange kDrawEveryRange{"frames", 1, 100000};
 
 // --draw PATTERN of a sequence command: false with the reason in `why` unless the pattern holds
 // one %d or %0Nd for the frame number.

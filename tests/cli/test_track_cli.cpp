@@ -212,7 +212,7 @@ TEST_CASE("track: every error is one line on stderr and a non-zero exit", "[cli]
     require_error({frame, "--model", "kalman"}, 2, "'kalman' is not paper or turn");
     require_error({frame, "--gate-angle"}, 2, "--gate-angle needs a value");
     require_error({frame, "--gate-distance", "far"}, 2, "'far' is not a number");
-    require_error({frame, "--max-predicted", "256"}, 2, "out of range 0..255");
+    require_error({frame, "--max-predicted", "256"}, 2, "out of range 0..254, or off");
     require_error({(dir / "no_such_file.pgm").string()}, 1, "cannot open");
     require_error({(dir / "none%03d.pgm").string()}, 1, "none");
 

@@ -171,7 +171,8 @@ TEST_CASE("the limit on the share of cells scales with the root of the frame's r
     CHECK(!interior_clear({46, 1600}, 480, 16));
     CHECK(interior_clear({128, 1600}, 60, 16));
     CHECK(!interior_clear({129, 1600}, 60, 16));
-    CHECK(interior_clear({400, 1600}, 240, 0));  // 0: not tested
+    CHECK(interior_clear({400, 1600}, 240, kCheckOff));  // off: not tested
+    CHECK(!interior_clear({1, 1600}, 240, 0));
     CHECK(interior_clear({0, 0}, 240, 16));
 }
 
@@ -212,7 +213,7 @@ TEST_CASE("a blank board is kept, a printed rectangle of the same outline is not
     CHECK(g_det.quad_stats().rejected_interior >= 1);
 
     // With the test off the printed rectangle is a quadrangle like any other.
-    params.refine.max_inside_edge_cells_percent = 0;
+    params.refine.max_inside_edge_cells_percent = kCheckOff;
     REQUIRE(io::push_frame(g_det, quad_frame(outline, true), params) == s);
     REQUIRE(g_det.quad_count() >= 1);
     for (int i = 0; i < 4; ++i) {
@@ -313,7 +314,7 @@ TEST_CASE("no quadrangle is cut out of a checkerboard's lines", "[interior]") {
     // (its lines end at the pattern's border, inside it).
     const Checkerboard board = checkerboard_frame();
     BoardParams params;
-    params.refine.max_lines_across = 255;
+    params.refine.max_lines_across = kCheckOff;
     const Status s = io::push_frame(g_det, board.image, params);
     REQUIRE((s == Status::ok || s == Status::capacity_exceeded));
     int cut_out = 0;

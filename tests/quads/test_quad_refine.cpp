@@ -192,9 +192,10 @@ TEST_CASE("a side without edges keeps its line and the evidence turns the quadra
     // In one call: turned down at side 2 (side 3 is not walked).
     CHECK_FALSE(
         refine_verified(g_lines.edges(), side_lines, RefineParams{}, verified, sides, &share));
-    // Unless nothing is verified.
+    // Unless the side checks are off.
     RefineParams keep_all;
-    keep_all.verify = false;
+    keep_all.min_side_evidence_percent = kCheckOff;
+    keep_all.min_hidden_side_evidence_percent = kCheckOff;
     CHECK(refine_verified(g_lines.edges(), side_lines, keep_all, verified, sides, &share));
 }
 

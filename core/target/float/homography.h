@@ -10,6 +10,8 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/setting_range.h"
+
 namespace qt {
 
 // H maps homogeneous points of image A into image B: (x', y', w')ᵀ = H (x, y, 1)ᵀ, row-major
@@ -63,6 +65,14 @@ struct RansacParams {
     uint16_t min_inliers = 8;        // fewer: no_consensus (4 would fit any sample exactly)
     uint64_t seed = 1;  // Pcg32 seed: the same pairs and seed give the same H everywhere
 };
+
+// RansacParams' units and accepted ranges (base/setting_range.h).
+struct RansacRanges {
+    SettingRange inlier_px{"px", 5, 5000, 2};  // 0.05..50
+    SettingRange max_iterations{"hypotheses", 1, 65535};
+    SettingRange seed{"", 0, 2147483647};
+};
+inline constexpr RansacRanges kRansacRanges{};
 
 enum class HomographyStatus : uint8_t {
     ok = 0,

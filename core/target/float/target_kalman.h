@@ -10,6 +10,7 @@
 // first order (the Jacobian J of the homography at the position: v ← J v, P ← T P Tᵀ with
 // T = diag(J, J)). Float only, never double; P is re-symmetrised after each step.
 #pragma once
+#include "base/setting_range.h"
 #include "target/float/homography.h"
 
 namespace qt {
@@ -20,6 +21,14 @@ struct TargetKalmanParams {
     float r = 4.0f;       // measurement variance of template matching, px² (σ = 2 px)
     float p0_vel = 4.0f;  // initial velocity variance, px²/frame² (initial position: r)
 };
+
+// TargetKalmanParams' units and accepted ranges (base/setting_range.h).
+struct TargetKalmanRanges {
+    SettingRange q_pos{"px^2", 0, 10000};
+    SettingRange q_vel{"(px/frame)^2", 0, 1000};
+    SettingRange r{"px^2", 1, 1000000, 2};  // 0.01..10000
+};
+inline constexpr TargetKalmanRanges kTargetKalmanRanges{};
 
 struct Innovation {
     float nu_x = 0, nu_y = 0;  // z − H x̄, px

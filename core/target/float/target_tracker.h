@@ -37,6 +37,7 @@
 #pragma once
 #include <stdint.h>
 
+#include "base/setting_range.h"
 #include "target/float/homography.h"
 #include "target/float/target_kalman.h"
 
@@ -136,6 +137,21 @@ struct TargetTrackerParams {
     bool coast_projective = true;
 };
 
+// TargetTrackerParams' units and accepted ranges (base/setting_range.h).
+struct TargetTrackerRanges {
+    SettingRange min_score{"", -1, 1};            // NCC
+    SettingRange gate_nds{"", 1, 100000000, 2};   // 0.01..1e6
+    SettingRange gate_rep_px{"px", 1, 10000, 2};  // 0.01..100
+    SettingRange th_rep_px2{"px^2", 0, 1000000000};
+    SettingRange reset_nds{"", 0, 1000000};
+    SettingRange reset_det_s{"px^4", 0, 1000000000000};
+    SettingRange max_radius_px{"px", 1, 48};
+    SettingRange max_unseen{"frames", 1, 65535};
+    SettingRange max_outside{"frame sizes", 0, 100};
+    SettingRange coast_fit_frames{"frames", 0, 63};
+};
+inline constexpr TargetTrackerRanges kTargetTrackerRanges{};
+
 // The frame's camera motion: the homography from the previous frame's image into this one.
 struct FrameGeometry {
     bool valid = false;         // false: the estimate failed this frame
@@ -191,7 +207,8 @@ public:
     TargetEstimate update(const TargetMeasurement& m);
 
     // The most frames the coasting line is fitted over (the measurements kept).
-    static constexpr uint16_t kMaxCoastFitFrames = 63;
+    static constexpr uint16_t kMaxCoastFitFrames =
+        static_cast<uint16_t>(kTargetTrackerRanges.coast_fit_frames.hi);
 
     TargetState state() const { return state_; }
     const TargetTrackerParams& params() const { return params_; }
