@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The house's layering, read from the #include lines: no folder of platform/ includes a sibling
-that includes it back (directly or round a longer circle), and hw_model's beat-level models
-(gradient_model, edge_model, vector_format) include nothing of platform/.
+that includes it back (directly or round a longer circle), and hw_model's beat-level models (the
+files of hw_model/ itself) include nothing of platform/ or of the vector generator
+(hw_model/generator/).
 
     check_layers.py ROOT      exit 0 when the layering holds, 1 with each offence on stdout
 """
@@ -10,7 +11,7 @@ import re
 import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
-MODELS = ("gradient_model", "edge_model", "vector_format")
+GENERATOR = "generator"
 
 
 def includes(path):
@@ -48,12 +49,17 @@ def main():
             if r not in seen:
                 seen.add(r)
                 todo.extend(edges[r])
-    for path in sources(os.path.join(root, "hw_model")):
-        if os.path.splitext(os.path.basename(path))[0] not in MODELS:
+    hw_model = os.path.join(root, "hw_model")
+    generated = set(os.listdir(os.path.join(hw_model, GENERATOR)))
+    for name in sorted(os.listdir(hw_model)):
+        path = os.path.join(hw_model, name)
+        if not name.endswith((".h", ".cpp")):
             continue
         for inc in includes(path):
             if inc.split("/", 1)[0] in rooms:
-                bad.append("%s (a model) includes platform's %s" % (os.path.relpath(path, root), inc))
+                bad.append("hw_model/%s (a model) includes platform's %s" % (name, inc))
+            if inc.startswith(GENERATOR + "/") or inc in generated:
+                bad.append("hw_model/%s (a model) includes the generator's %s" % (name, inc))
     for line in bad:
         print(line)
     print("%d platform folders, %s" % (len(rooms), "FAIL" if bad else "layering holds"))
