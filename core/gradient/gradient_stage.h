@@ -9,7 +9,8 @@
 // What a row becomes is the RowKernel's business: WordRowKernel (the default) makes gradient
 // words, the FPGA block's output; XyWordRowKernel makes words with gx and gy only, for the
 // Harris detector; edge_stage.h's NmsRowKernel makes the edge stage's packed rows directly,
-// for the software path of the lines stage.
+// for the software path of the lines stage. A kernel is called as
+// kernel(above, center, below, width, y, out) for row y.
 #pragma once
 #include <stdint.h>
 #include <string.h>
@@ -28,7 +29,7 @@ struct WordRowKernel {
     using value_type = gradient_word;
     static constexpr uint16_t kPad = 0;  // extra entries before and after the row
     void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
-                    uint16_t width, gradient_word* out) const {
+                    uint16_t width, uint16_t, gradient_word* out) const {
         gradient_row(above, center, below, width, out);
     }
 };
@@ -44,7 +45,7 @@ struct XyWordRowKernel {
     using value_type = gradient_word;
     static constexpr uint16_t kPad = 0;
     void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
-                    uint16_t width, gradient_word* out) const {
+                    uint16_t width, uint16_t, gradient_word* out) const {
         gradient_row_xy(above, center, below, width, out);
     }
 };
@@ -91,13 +92,13 @@ public:
             // Row y-1 has all its neighbours now: above is row y-2 (in slot_y, about to be
             // overwritten) or row 0 replicated when y == 1.
             const uint8_t* above = y == 1 ? prev : slot_y;
-            kernel(above, prev, pixels, width_, out_);
+            kernel(above, prev, pixels, width_, static_cast<uint16_t>(y - 1), out_);
             sink(static_cast<uint16_t>(y - 1), static_cast<const value_type*>(out_), width_);
         }
         memcpy(slot_y, pixels, width_);
         if (y + 1u == height_) {
             // Last row: its lower neighbour is itself (replicated border).
-            kernel(y == 0 ? slot_y : prev, slot_y, slot_y, width_, out_);
+            kernel(y == 0 ? slot_y : prev, slot_y, slot_y, width_, y, out_);
             sink(y, static_cast<const value_type*>(out_), width_);
             in_frame_ = false;
         }

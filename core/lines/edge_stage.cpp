@@ -44,6 +44,12 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
                       uint16_t width, uint16_t edge_threshold, uint16_t* row) {
     row[0] = 0;
     row[width + 1] = 0;
+    gradient_nms_span(above, center, below, width, 0, width, edge_threshold, row);
+}
+
+void gradient_nms_span(const uint8_t* above, const uint8_t* center, const uint8_t* below,
+                       uint16_t width, uint16_t x_begin, uint16_t x_end, uint16_t edge_threshold,
+                       uint16_t* row) {
     auto magnitude = [](int32_t gx, int32_t gy) {
         return static_cast<uint16_t>((gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy));
     };
@@ -57,17 +63,21 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
         return pack(static_cast<int32_t>(center[x + 1]) - center[x - 1], gy_at(x));
     };
     const int32_t last = width - 1;  // borders replicated
+    if (x_begin >= x_end) return;
     if (width == 1) {
         row[1] = pack(0, gy_at(0));
         return;
     }
-    row[1] = pack(static_cast<int32_t>(center[1]) - center[0], gy_at(0));
-    row[last + 1] = pack(static_cast<int32_t>(center[last]) - center[last - 1], gy_at(last));
+    if (x_begin == 0) row[1] = pack(static_cast<int32_t>(center[1]) - center[0], gy_at(0));
+    if (x_end == width)
+        row[last + 1] = pack(static_cast<int32_t>(center[last]) - center[last - 1], gy_at(last));
+    // The columns between the borders, [x, stop).
+    const int32_t stop = x_end < width ? x_end : last;
 #if defined(__ARM_FEATURE_SIMD32)
     // Cortex-M4/M7 (DSP extension): four pixels per step in byte and half-word lanes, exact
     // magnitudes; a group with a pixel at or above the threshold goes through pack(). About a
     // quarter of the plain loop's instructions per pixel.
-    int32_t x = 1;
+    int32_t x = x_begin > 0 ? x_begin : 1;
     if (edge_threshold >= 1) {
         const uint16x2_t below_threshold = (edge_threshold - 1u) * 0x00010001u;
         auto load4 = [](const uint8_t* p) {
@@ -75,7 +85,7 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
             memcpy(&v, p, sizeof v);  // an unaligned LDR: allowed on ARMv7-M
             return v;
         };
-        for (; x + 4 <= last; x += 4) {
+        for (; x + 4 <= stop; x += 4) {
             const uint8x4_t left = load4(center + x - 1), right = load4(center + x + 1);
             const uint8x4_t up = load4(above + x), down = load4(below + x);
             const uint8x4_t agx = __uqsub8(right, left) | __uqsub8(left, right);  // |gx|, 4 lanes
@@ -93,14 +103,14 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
             for (int32_t k = x; k < x + 4; ++k) row[k + 1] = inner(k);
         }
     }
-    for (; x < last; ++x) row[x + 1] = inner(x);
+    for (; x < stop; ++x) row[x + 1] = inner(x);
 #elif QT_VECTOR_UNIT
     // Blocks of 32 pixels: the magnitudes, branch-free so that the host compiler vectorises
     // the loop (pack()'s branch stops it), noting whether any reaches the threshold; then,
     // only in a block where one does, the directions. Few blocks hold an edge.
     const uint16_t bias = threshold_bias(edge_threshold);
-    int32_t x = 1;
-    for (; x + kBlock <= last; x += kBlock) {
+    int32_t x = x_begin > 0 ? x_begin : 1;
+    for (; x + kBlock <= stop; x += kBlock) {
         uint16_t reached = 0;
         for (int32_t k = x; k < x + kBlock; ++k) {
             const uint16_t m =
@@ -112,9 +122,9 @@ void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t
         for (int32_t k = x; k < x + kBlock; ++k)
             if (row[k + 1] >= edge_threshold) row[k + 1] = inner(k);
     }
-    for (; x < last; ++x) row[x + 1] = inner(x);
+    for (; x < stop; ++x) row[x + 1] = inner(x);
 #else
-    for (int32_t x = 1; x < last; ++x) row[x + 1] = inner(x);
+    for (int32_t x = x_begin > 0 ? x_begin : 1; x < stop; ++x) row[x + 1] = inner(x);
 #endif
 }
 
@@ -189,11 +199,17 @@ inline void nms_pixel(const uint16_t* a, const uint16_t* c, const uint16_t* b, u
 void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t width, uint16_t y,
              uint16_t edge_threshold, EdgeList& out) {
     out.begin_row(y);
+    nms_span(a, c, b, 0, width, edge_threshold, out);
+}
+
+void nms_span(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t x_begin,
+              uint16_t x_end, uint16_t edge_threshold, EdgeList& out) {
     // Most pixels are below the threshold: skip them a group at a time (threshold_bias).
-    uint32_t i = 1;  // index x + 1 in the padded rows
+    uint32_t i = x_begin + 1u;         // index x + 1 in the padded rows
+    const uint32_t stop = x_end + 1u;  // ... up to this one, excluded
 #if QT_VECTOR_UNIT
     const uint16_t bias = threshold_bias(edge_threshold);
-    for (; i + kBlock <= width + 1u; i += kBlock) {
+    for (; i + kBlock <= stop; i += kBlock) {
         uint16_t reached = 0;
         for (uint32_t k = i; k < i + kBlock; ++k)
             reached |= static_cast<uint16_t>((c[k] & 0x1FFu) + bias);
@@ -204,7 +220,7 @@ void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t w
     // Four 16-bit lanes in one 64-bit add.
     const uint64_t lanes = 0x0001000100010001ULL;
     const uint64_t bias = threshold_bias(edge_threshold) * lanes;
-    while (i + 3 <= width) {
+    while (i + 4 <= stop) {
         uint64_t four;
         memcpy(&four, c + i, sizeof four);
         if ((((four & (0x1FFu * lanes)) + bias) & (kReached * lanes)) == 0) {
@@ -215,7 +231,7 @@ void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t w
         for (; i < end; ++i) nms_pixel(a, c, b, i, edge_threshold, out);
     }
 #endif
-    for (; i <= width; ++i) nms_pixel(a, c, b, i, edge_threshold, out);
+    for (; i < stop; ++i) nms_pixel(a, c, b, i, edge_threshold, out);
 }
 
 }  // namespace qt

@@ -22,6 +22,7 @@
 
 #include "base/status.h"
 #include "gradient/gradient_word.h"
+#include "lines/band_window.h"
 #include "lines/edge_list.h"
 
 namespace qt {
@@ -38,20 +39,43 @@ void pack_nms_row(const gradient_word* words, uint16_t width, uint16_t* row);
 // direction left 0 where the magnitude is below edge_threshold.
 void gradient_nms_row(const uint8_t* above, const uint8_t* center, const uint8_t* below,
                       uint16_t width, uint16_t edge_threshold, uint16_t* row);
+// The entries of columns [x_begin, x_end) only (x_end <= width), the pads and the other
+// columns left as they were: what gradient_nms_row writes there.
+void gradient_nms_span(const uint8_t* above, const uint8_t* center, const uint8_t* below,
+                       uint16_t width, uint16_t x_begin, uint16_t x_end, uint16_t edge_threshold,
+                       uint16_t* row);
 
-// GradientStage kernel producing packed NMS rows (kPad = 1: the pad columns).
+// GradientStage kernel producing packed NMS rows (kPad = 1: the pad columns). With a window
+// (band_window.h), row y is computed only where NMS will read it: the columns the bands reach
+// in rows y - 1 .. y + 1, grown by a pixel either way; a row no band comes near is not
+// computed at all.
 struct NmsRowKernel {
     using value_type = uint16_t;
     static constexpr uint16_t kPad = 1;
     uint16_t edge_threshold = 1;
+    const BandWindow* window = nullptr;  // null or inactive: the whole row
     void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
-                    uint16_t width, uint16_t* out) const {
-        gradient_nms_row(above, center, below, width, edge_threshold, out);
+                    uint16_t width, uint16_t y, uint16_t* out) const {
+        if (window == nullptr || !window->active()) {
+            gradient_nms_row(above, center, below, width, edge_threshold, out);
+            return;
+        }
+        out[0] = 0;
+        out[width + 1] = 0;
+        ColumnSpan spans[BandWindow::kMaxSpans];
+        const uint8_t n = window->spans(y - 1, y + 1, 1, width, spans);
+        for (uint8_t i = 0; i < n; ++i)
+            gradient_nms_span(above, center, below, width, spans[i].begin, spans[i].end,
+                              edge_threshold, out);
     }
 };
 // Appends row y's edges (centre row `c`, rows above `a` and below `b`, all packed) to `out`.
 void nms_row(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t width, uint16_t y,
              uint16_t edge_threshold, EdgeList& out);
+// The edges of columns [x_begin, x_end) of the row begun last in `out` (the rows' entries at
+// x_begin - 1 .. x_end must hold what the full rows would): those nms_row appends there.
+void nms_span(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t x_begin,
+              uint16_t x_end, uint16_t edge_threshold, EdgeList& out);
 
 template <uint16_t MaxWidth>
 class EdgeStage {
@@ -59,8 +83,11 @@ public:
     // Starts a frame; edges go to `out` (emptied here). edge_threshold: L1 magnitude in grey
     // levels, 1..510. bad_size when a dimension is 0, width > MaxWidth or height exceeds the
     // list's rows.
-    Status begin_frame(uint16_t width, uint16_t height, uint16_t edge_threshold, EdgeList& out) {
+    // window: null or inactive, every pixel; else only the pixels its bands reach.
+    Status begin_frame(uint16_t width, uint16_t height, uint16_t edge_threshold, EdgeList& out,
+                       const BandWindow* window = nullptr) {
         in_frame_ = false;
+        window_ = window != nullptr && window->active() ? window : nullptr;
         if (width == 0 || height == 0 || width > MaxWidth) return Status::bad_size;
         const Status s = out.begin_frame(height);
         if (s != Status::ok) return s;
@@ -117,21 +144,35 @@ private:
         const uint16_t y = next_row_;
         if (y >= 1) {
             const uint16_t* above = y >= 2 ? rows_[(y - 2) % 3] : zero_;
-            nms_row(above, rows_[(y - 1) % 3], rows_[y % 3], width_, static_cast<uint16_t>(y - 1),
-                    threshold(), *out_);
+            decide(above, rows_[(y - 1) % 3], rows_[y % 3], static_cast<uint16_t>(y - 1));
         }
         if (y + 1u == height_) {
             const uint16_t* above = y >= 1 ? rows_[(y - 1) % 3] : zero_;
-            nms_row(above, rows_[y % 3], zero_, width_, y, threshold(), *out_);
+            decide(above, rows_[y % 3], zero_, y);
             out_->end_frame();
             in_frame_ = false;
         }
         next_row_ = static_cast<uint16_t>(y + 1u);
     }
 
+    // Row y's edges: every pixel's, or those of the window's spans.
+    void decide(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t y) {
+        if (window_ == nullptr) {
+            nms_row(a, c, b, width_, y, threshold(), *out_);
+            return;
+        }
+        ColumnSpan spans[BandWindow::kMaxSpans];
+        const uint8_t n = window_->spans(y, y, 0, width_, spans);
+        if (n == 0) return;
+        out_->begin_row(y);
+        for (uint8_t i = 0; i < n; ++i)
+            nms_span(a, c, b, spans[i].begin, spans[i].end, threshold(), *out_);
+    }
+
     uint16_t rows_[3][MaxWidth + 2] = {};
     uint16_t zero_[MaxWidth + 2] = {};
     EdgeList* out_ = nullptr;
+    const BandWindow* window_ = nullptr;
     uint16_t width_ = 0, height_ = 0, threshold_ = 0, next_row_ = 0;
     bool in_frame_ = false;
 };

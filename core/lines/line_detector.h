@@ -86,7 +86,12 @@ public:
     // bad_size (and no frame: rows and finish() get not_in_frame) when a dimension is 0 or
     // above capacity; previous_frame_incomplete when rows of the frame in progress were missing
     // (the new frame has started all the same).
-    Status begin_frame(uint16_t width, uint16_t height, const LineParams& params) {
+    // window (tracking mode, band_window.h): when active, the frame's edges are sought only in
+    // its bands, from camera rows (threshold_nms; canny takes the whole frame: its hysteresis
+    // joins edges through pixels outside the bands) or gradient rows; it must stay unchanged
+    // until the frame's last row.
+    Status begin_frame(uint16_t width, uint16_t height, const LineParams& params,
+                       const BandWindow* window = nullptr) {
         params_ = params;
         stats_ = LineStats{};
         segment_count_ = line_count_ = 0;
@@ -98,9 +103,12 @@ public:
         if (height > MaxHeight) return Status::bad_size;
         edges_view_ = edges_.view();
         gradient_.kernel.edge_threshold = params.edge_threshold;
+        const BandWindow* bands = params.front_end == EdgeFrontEnd::canny ? nullptr : window;
+        gradient_.kernel.window = bands;
         Status s = gradient_.begin_frame(width, height);
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
-        const Status e = edge_stage_.begin_frame(width, height, params.edge_threshold, edges_view_);
+        const Status e =
+            edge_stage_.begin_frame(width, height, params.edge_threshold, edges_view_, bands);
         if (e != Status::ok) return e;
         if (params.front_end == EdgeFrontEnd::canny) smooth_.begin_frame(width, height);
         width_ = width;

@@ -43,11 +43,13 @@ public:
     // Quadrangles a caller may ask for, best first (base/setting_range.h).
     static constexpr SettingRange quads_range{"", 1, MaxQuads};
 
-    Status begin_frame(uint16_t width, uint16_t height, const BoardParams& params) {
+    // window: tracking mode's bands (LineDetector::begin_frame); null: the whole frame.
+    Status begin_frame(uint16_t width, uint16_t height, const BoardParams& params,
+                       const BandWindow* window = nullptr) {
         params_ = params;
         quad_count_ = 0;
         quad_stats_ = QuadStats{};
-        return lines_.begin_frame(width, height, params.lines);
+        return lines_.begin_frame(width, height, params.lines, window);
     }
     Status push_row(const uint8_t* pixels, uint16_t length) {
         return lines_.push_row(pixels, length);

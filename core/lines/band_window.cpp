@@ -1,0 +1,108 @@
+#include "lines/band_window.h"
+
+#include "base/floor_div.h"
+#include "base/isqrt.h"
+
+namespace qt {
+
+namespace {
+
+constexpr int32_t kSub = 16;  // 1/16 px
+
+int32_t to_sub(q16_16 v) { return static_cast<int32_t>(floor_div(v.raw, 65536 / kSub)); }
+
+}  // namespace
+
+void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_width, q16_16 reach) {
+    const int32_t hw = to_sub(half_width), ext = to_sub(reach);
+    for (int b = 0; b < 4; ++b) {
+        const int32_t ax = to_sub(x[b]), ay = to_sub(y[b]);
+        const int32_t bx = to_sub(x[(b + 1) & 3]), by = to_sub(y[(b + 1) & 3]);
+        const int64_t dx = bx - ax, dy = by - ay;
+        const uint32_t len = isqrt64(static_cast<uint64_t>(dx * dx + dy * dy));
+        // Unit vectors along the side (ux, uy) and across it (-uy, ux), Q14.
+        const int64_t ux = len > 0 ? dx * 16384 / len : 16384, uy = len > 0 ? dy * 16384 / len : 0;
+        const int32_t along_x = static_cast<int32_t>(ux * ext / 16384),
+                      along_y = static_cast<int32_t>(uy * ext / 16384);
+        const int32_t across_x = static_cast<int32_t>(-uy * hw / 16384),
+                      across_y = static_cast<int32_t>(ux * hw / 16384);
+        const int32_t sx = ax - along_x, sy = ay - along_y;  // the side's ends, extended
+        const int32_t ex = bx + along_x, ey = by + along_y;
+        // Rounding above moves a vertex by at most 1/16 px inwards: widen by that much.
+        const int32_t wx = across_x + (across_x >= 0 ? 1 : -1),
+                      wy = across_y + (across_y >= 0 ? 1 : -1);
+        px_[b][0] = sx + wx, py_[b][0] = sy + wy;
+        px_[b][1] = ex + wx, py_[b][1] = ey + wy;
+        px_[b][2] = ex - wx, py_[b][2] = ey - wy;
+        px_[b][3] = sx - wx, py_[b][3] = sy - wy;
+    }
+    active_ = true;
+}
+
+uint8_t BandWindow::spans(int32_t first, int32_t last, int32_t grow, uint16_t width,
+                          ColumnSpan out[kMaxSpans]) const {
+    // The slab of the rows' squares, 1/16 px.
+    const int32_t lo = first * kSub - kSub / 2, hi = last * kSub + kSub / 2;
+    int32_t begin[4], end[4];
+    uint8_t n = 0;
+    for (int b = 0; b < 4; ++b) {
+        int32_t xmin = INT32_MAX, xmax = INT32_MIN;
+        auto take = [&](int32_t xv) {
+            xmin = xv < xmin ? xv : xmin;
+            xmax = xv > xmax ? xv : xmax;
+        };
+        for (int v = 0; v < 4; ++v) {
+            const int32_t x0 = px_[b][v], y0 = py_[b][v];
+            const int32_t x1 = px_[b][(v + 1) & 3], y1 = py_[b][(v + 1) & 3];
+            if (y0 >= lo && y0 <= hi) take(x0);
+            const int32_t slab[2] = {lo, hi};
+            for (const int32_t yl : slab) {
+                if (y0 == y1 || yl < (y0 < y1 ? y0 : y1) || yl > (y0 < y1 ? y1 : y0)) continue;
+                // The edge's crossing with y = yl, rounded outwards by the min/max below
+                // (floor and floor + 1 both taken).
+                const int64_t num = static_cast<int64_t>(x1 - x0) * (yl - y0);
+                const int32_t xf = x0 + static_cast<int32_t>(floor_div(num, y1 - y0));
+                take(xf);
+                take(xf + 1);
+            }
+        }
+        if (xmin > xmax) continue;
+        // Pixel x's square [x - 1/2, x + 1/2] meets [xmin, xmax].
+        const int64_t b0 = -floor_div(-(xmin - kSub / 2), kSub) - grow;  // ceil
+        const int64_t b1 = floor_div(xmax + kSub / 2, kSub) + grow + 1;
+        const int64_t c0 = b0 < 0 ? 0 : b0, c1 = b1 > width ? width : b1;
+        if (c0 >= c1) continue;
+        // Insert in order of begin.
+        int32_t k = n++;
+        for (; k > 0 && begin[k - 1] > c0; --k) {
+            begin[k] = begin[k - 1];
+            end[k] = end[k - 1];
+        }
+        begin[k] = static_cast<int32_t>(c0);
+        end[k] = static_cast<int32_t>(c1);
+    }
+    uint8_t count = 0;
+    for (uint8_t i = 0; i < n; ++i) {
+        if (count > 0 && begin[i] <= out[count - 1].end) {
+            if (end[i] > out[count - 1].end) out[count - 1].end = static_cast<uint16_t>(end[i]);
+            continue;
+        }
+        out[count++] = ColumnSpan{static_cast<uint16_t>(begin[i]), static_cast<uint16_t>(end[i])};
+    }
+    return count;
+}
+
+bool BandWindow::rows(uint16_t height, int32_t* first, int32_t* last) const {
+    int32_t ymin = INT32_MAX, ymax = INT32_MIN;
+    for (int b = 0; b < 4; ++b)
+        for (int v = 0; v < 4; ++v) {
+            ymin = py_[b][v] < ymin ? py_[b][v] : ymin;
+            ymax = py_[b][v] > ymax ? py_[b][v] : ymax;
+        }
+    const int64_t f = -floor_div(-(ymin - kSub / 2), kSub), l = floor_div(ymax + kSub / 2, kSub);
+    *first = static_cast<int32_t>(f < 0 ? 0 : f);
+    *last = static_cast<int32_t>(l >= height ? height - 1 : l);
+    return *first <= *last;
+}
+
+}  // namespace qt

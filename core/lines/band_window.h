@@ -1,0 +1,52 @@
+// Tracking mode's window: bands around a tracked board's four sides, where the rows stage
+// computes gradients and edges, and nowhere else.
+//
+// Why: once the board is tracked, each side of the next frame lies within a few pixels of its
+// prediction, and the rest of the frame (its background, the board's own print) only costs
+// work. A frame processed through a window gives, inside the bands, exactly the edges the full
+// frame gives (an edge decision reads the 3 × 3 packed entries around it, each of which reads
+// 3 × 3 pixels: both are computed wherever a band needs them); rows that no band crosses are
+// skipped, and so are the columns of the others outside the bands.
+//
+// A band is the rectangle around side i (corner i to corner i + 1): the points within
+// half_width px of the side's line, between its corners moved `reach` px outwards along it.
+// Arithmetic in 1/16 px, integers only.
+#pragma once
+#include <stdint.h>
+
+#include "base/fixed.h"
+
+namespace qt {
+
+// Columns [begin, end) of a row.
+struct ColumnSpan {
+    uint16_t begin, end;
+};
+
+class BandWindow {
+public:
+    static constexpr uint8_t kMaxSpans = 4;  // one per band; merged when they overlap
+
+    // The bands around the quadrangle (x[i], y[i]) (px; side i from corner i to corner i + 1).
+    // half_width, reach: px, 0..256. A side shorter than 1/16 px gives a square band.
+    void set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_width, q16_16 reach);
+    // No bands: the whole frame.
+    void clear() { active_ = false; }
+    bool active() const { return active_; }
+
+    // The columns of rows first..last (inclusive) that a band reaches (a pixel is reached when
+    // its square meets the band), each grown by `grow` px either way, clipped to [0, width):
+    // merged and in increasing order into out[0 .. count). Returns count (0: no band there).
+    uint8_t spans(int32_t first, int32_t last, int32_t grow, uint16_t width,
+                  ColumnSpan out[kMaxSpans]) const;
+
+    // The rows first..last (inclusive, clipped to [0, height)) that a band reaches; false when
+    // none does.
+    bool rows(uint16_t height, int32_t* first, int32_t* last) const;
+
+private:
+    int32_t px_[4][4] = {}, py_[4][4] = {};  // band b's rectangle, vertices in order, 1/16 px
+    bool active_ = false;
+};
+
+}  // namespace qt
