@@ -35,6 +35,15 @@ void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_widt
         px_[b][1] = ex + wx, py_[b][1] = ey + wy;
         px_[b][2] = ex - wx, py_[b][2] = ey - wy;
         px_[b][3] = sx - wx, py_[b][3] = sy - wy;
+        ymin_[b] = INT32_MAX;
+        ymax_[b] = INT32_MIN;
+        for (int v = 0; v < 4; ++v) {
+            const int32_t y0 = py_[b][v], y1 = py_[b][(v + 1) & 3];
+            const int64_t run = int64_t{px_[b][(v + 1) & 3]} - px_[b][v];
+            slope_q16_[b][v] = y1 == y0 ? 0 : static_cast<int32_t>(run * 65536 / (y1 - y0));
+            ymin_[b] = y0 < ymin_[b] ? y0 : ymin_[b];
+            ymax_[b] = y0 > ymax_[b] ? y0 : ymax_[b];
+        }
     }
     active_ = true;
 }
@@ -46,23 +55,25 @@ uint8_t BandWindow::spans(int32_t first, int32_t last, int32_t grow, uint16_t wi
     int32_t begin[4], end[4];
     uint8_t n = 0;
     for (int b = 0; b < 4; ++b) {
+        if (hi < ymin_[b] || lo > ymax_[b]) continue;
         int32_t xmin = INT32_MAX, xmax = INT32_MIN;
         auto take = [&](int32_t xv) {
             xmin = xv < xmin ? xv : xmin;
             xmax = xv > xmax ? xv : xmax;
         };
         for (int v = 0; v < 4; ++v) {
-            const int32_t x0 = px_[b][v], y0 = py_[b][v];
-            const int32_t x1 = px_[b][(v + 1) & 3], y1 = py_[b][(v + 1) & 3];
+            const int32_t x0 = px_[b][v], y0 = py_[b][v], y1 = py_[b][(v + 1) & 3];
             if (y0 >= lo && y0 <= hi) take(x0);
+            if (y0 == y1) continue;
+            const int32_t ylo = y0 < y1 ? y0 : y1, yhi = y0 < y1 ? y1 : y0;
             const int32_t slab[2] = {lo, hi};
             for (const int32_t yl : slab) {
-                if (y0 == y1 || yl < (y0 < y1 ? y0 : y1) || yl > (y0 < y1 ? y1 : y0)) continue;
-                // The edge's crossing with y = yl, rounded outwards by the min/max below
-                // (floor and floor + 1 both taken).
-                const int64_t num = static_cast<int64_t>(x1 - x0) * (yl - y0);
-                const int32_t xf = x0 + static_cast<int32_t>(floor_div(num, y1 - y0));
-                take(xf);
+                if (yl < ylo || yl > yhi) continue;
+                // The edge's crossing with y = yl, within a 1/16 px of the product's floor (the
+                // slope was rounded): both neighbours taken, so the span only grows.
+                const int32_t xf = x0 + static_cast<int32_t>(floor_div(
+                                            int64_t{slope_q16_[b][v]} * (yl - y0), 65536));
+                take(xf - 1);
                 take(xf + 1);
             }
         }

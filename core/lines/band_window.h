@@ -46,6 +46,11 @@ public:
 
 private:
     int32_t px_[4][4] = {}, py_[4][4] = {};  // band b's rectangle, vertices in order, 1/16 px
+    // Edge v of band b (vertex v to v + 1): dx/dy in Q16, 0 for a horizontal edge (set_quad
+    // divides once a frame, so that spans() only multiplies: a division of 64-bit values is a
+    // library call on a Cortex-M).
+    int32_t slope_q16_[4][4] = {};
+    int32_t ymin_[4] = {}, ymax_[4] = {};  // band b's rows, 1/16 px
     bool active_ = false;
 };
 

@@ -8,6 +8,7 @@
 #include "scene/board_sequence.h"
 #include "scene/line_scene.h"
 #include "tracking/quad_tracker.h"
+#include "tracking/tracking_mode.h"
 
 namespace qt::vec {
 
@@ -62,6 +63,10 @@ std::string frame_name(const ChainCase& c, size_t k) {
     return c.name + suffix;
 }
 
+std::string text_name(const ChainCase& c, bool tracking_mode) {
+    return tracking_mode ? c.name + "-bands" : c.name;
+}
+
 std::string format_pgm(const io::GreyImage& img) {
     std::string s =
         "P5\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n255\n";
@@ -69,18 +74,24 @@ std::string format_pgm(const io::GreyImage& img) {
     return s;
 }
 
-std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases) {
+std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases, bool tracking_mode) {
     static BoardDetectorQvga det;
     const BoardParams params;
     QuadTracker tracker(default_quad_tracker_params(320, 240));
+    TrackingModeParams mode_params;
+    mode_params.enabled = tracking_mode;
+    TrackingMode mode(mode_params);
     std::vector<std::string> texts;
     for (const ChainCase& c : cases) {
         tracker.reset();
+        mode.reset();
+        const BandWindow* window = nullptr;
         std::string text;
         for (size_t k = 0; k < c.frames.size(); ++k) {
             const io::GreyImage& frame = c.frames[k];
             if (det.begin_frame(static_cast<uint16_t>(frame.width),
-                                static_cast<uint16_t>(frame.height), params) != Status::ok) {
+                                static_cast<uint16_t>(frame.height), params,
+                                window) != Status::ok) {
                 text += "error: frame does not fit BoardDetectorQvga\n";
                 break;
             }
@@ -89,6 +100,7 @@ std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases) {
             const Status status = det.finish();
             const TrackedQuad track = tracker.step(det.lines().lines(), det.lines().line_count(),
                                                    det.quads(), det.quad_count());
+            window = mode.plan(track);
             write_frame_text(frame_name(c, k).c_str(), det, status, track,
                              tracker.stats().lost_reason,
                              [&](const char* line, size_t length) { text.append(line, length); });

@@ -25,6 +25,12 @@ std::string format_pgm(const io::GreyImage& img);
 // The result text of each case, the cases in order and each case's frames in order through
 // one BoardDetectorQvga and one QuadTracker (default parameters for 320 × 240), reset() at the
 // start of each case (so track ids run on from case to case), as the firmware runs them.
-std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases);
+// tracking_mode: each frame after the first through the window TrackingMode (default
+// parameters) planned from the frame before (tracking/tracking_mode.h); the case's texts are
+// then <name>-bands.
+std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases, bool tracking_mode);
+
+// The name of a case's text: <name>, or <name>-bands in tracking mode.
+std::string text_name(const ChainCase& c, bool tracking_mode);
 
 }  // namespace qt::vec

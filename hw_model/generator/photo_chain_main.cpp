@@ -1,6 +1,7 @@
-// photo_chain PHOTO_DIR OUT_DIR: writes OUT_DIR/photos_qvga_NN.pgm and photos_qvga.chain.txt
-// (photo_chain.h) for the firmware's chain case of real photographs; built and run at build
-// time by the Cortex-M presets (platform/firmware/CMakeLists.txt).
+// photo_chain PHOTO_DIR OUT_DIR: writes OUT_DIR/photos_qvga_NN.pgm, photos_qvga.chain.txt and
+// photos_qvga-bands.chain.txt (tracking mode) (photo_chain.h) for the firmware's chain case of
+// real photographs; built and run at build time by the Cortex-M presets
+// (platform/firmware/CMakeLists.txt).
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -22,7 +23,6 @@ int main(int argc, char** argv) {
     // After the committed cases, as the firmware runs them: track ids run on from case to case.
     std::vector<qt::vec::ChainCase> cases = qt::vec::chain_cases();
     cases.push_back(qt::vec::photo_chain_case(photos));
-    const std::vector<std::string> texts = qt::vec::chain_texts(cases);
     const qt::vec::ChainCase& photo_case = cases.back();
     const std::string dir = argv[2];
     auto write = [&](const std::string& name, const std::string& text) {
@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
     for (size_t k = 0; k < photo_case.frames.size(); ++k)
         write(qt::vec::frame_name(photo_case, k) + ".pgm",
               qt::vec::format_pgm(photo_case.frames[k]));
-    write(photo_case.name + ".chain.txt", texts.back());
+    for (const bool tracking_mode : {false, true})
+        write(qt::vec::text_name(photo_case, tracking_mode) + ".chain.txt",
+              qt::vec::chain_texts(cases, tracking_mode).back());
     return 0;
 }

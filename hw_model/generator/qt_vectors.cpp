@@ -72,12 +72,14 @@ Files generate() {
     files[dir + "manifest.txt"] = manifest;
     files[dir + "direction_table.hex"] = direction_text();
     const std::vector<ChainCase> cases = chain_cases();
-    const std::vector<std::string> texts = chain_texts(cases);
-    for (size_t i = 0; i < cases.size(); ++i) {
-        const ChainCase& c = cases[i];
-        for (size_t k = 0; k < c.frames.size(); ++k)
-            files["vectors/scenes/" + frame_name(c, k) + ".pgm"] = format_pgm(c.frames[k]);
-        files["vectors/scenes/" + c.name + ".chain.txt"] = texts[i];
+    for (const bool tracking_mode : {false, true}) {
+        const std::vector<std::string> texts = chain_texts(cases, tracking_mode);
+        for (size_t i = 0; i < cases.size(); ++i) {
+            const ChainCase& c = cases[i];
+            for (size_t k = 0; k < c.frames.size(); ++k)
+                files["vectors/scenes/" + frame_name(c, k) + ".pgm"] = format_pgm(c.frames[k]);
+            files["vectors/scenes/" + text_name(c, tracking_mode) + ".chain.txt"] = texts[i];
+        }
     }
     files["hdl/rtl/gradient_word.vh"] = verilog_header();
     files["hdl/rtl/edge_beat.vh"] = verilog_edge_header();

@@ -22,6 +22,12 @@
 // equal the camera rows' frame for frame. "fpga" lines give its instructions per frame and stage
 // (beats: push_edge_beats, the edge list's inserts; then as above), median and worst.
 //
+// Then tracking mode (tracking/tracking_mode.h): the camera rows again, each frame after a
+// case's first through the bands TrackingMode planned from the frame before. Its texts are
+// printed between "=== chain NAME-bands" and "=== end NAME-bands" lines, which the ctest
+// compares with the host's NAME-bands.chain.txt; "bands" lines give its instructions per frame
+// and stage (track includes the planning), median and worst.
+//
 // Instructions come from SysTick ticks, 40 instructions each under -icount shift=0
 // (cycle_counter.h); a reading is quantised to 40 and includes one ticks_now() call. Stages:
 //   rows     the frame's push_row calls, each timed: gradient, non-maximum suppression and
@@ -45,6 +51,7 @@
 #include "semihosting.h"
 #include "stack_usage.h"
 #include "tracking/quad_tracker.h"
+#include "tracking/tracking_mode.h"
 
 namespace {
 
@@ -82,14 +89,16 @@ constexpr uint32_t kAimRamBytes = 64 * 1024, kAimFlashBytes = 128 * 1024;
 // --- The chain -------------------------------------------------------------------------------
 qt::BoardDetectorQvga g_det;  // ~44 KiB, in .bss
 qt::QuadTracker g_tracker;
+qt::TrackingMode g_mode;
 alignas(4) uint8_t g_line[kWidth];  // the camera's line buffer
 
 enum Stage : unsigned { kRows, kHough, kCluster, kQuads, kTrack, kStages };
 constexpr const char* kStageNames[kStages] = {"rows", "hough", "cluster", "quads", "track"};
 constexpr const char* kFpgaStageNames[kStages] = {"beats", "hough", "cluster", "quads", "track"};
 
-// Where a frame's edges come from.
-enum class Input { camera_rows, fpga_beats };
+// Where a frame's edges come from: the camera rows (whole, or in tracking mode's bands) or the
+// FPGA's edge beats.
+enum class Input { camera_rows, fpga_beats, bands };
 
 // What the stages worked on, for reading the instruction counts.
 enum Work : unsigned {
@@ -123,11 +132,11 @@ void print_field(const char* name, uint64_t value) {
 }
 
 // "budget <prefix><name> rows=... total=..." ("fpga <prefix><name> beats=... total=..." for
-// the frames with edges from the FPGA).
+// the frames with edges from the FPGA, "bands ..." for tracking mode's).
 void print_instructions(const char* prefix, const char* name, const Instructions& n,
                         Input input = Input::camera_rows) {
     const bool fpga = input == Input::fpga_beats;
-    sh_write(fpga ? "fpga " : "budget ");
+    sh_write(fpga ? "fpga " : input == Input::bands ? "bands " : "budget ");
     sh_write(prefix);
     sh_write(name);
     for (unsigned s = 0; s < kStages; ++s)
@@ -146,19 +155,21 @@ uint64_t fnv1a(uint64_t h, const char* text, size_t length) {
 }
 constexpr uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
 
-// One frame through the chain, timed; its text printed (camera rows only) and hashed into
-// text_hash. Returns an error or nullptr.
-const char* run_frame(const ChainFrame& frame, Input input, bool& frame_open, Instructions& n,
-                      uint64_t& text_hash) {
+// One frame through the chain, timed; its text printed (camera rows only, whole or in bands)
+// and hashed into text_hash; `track` the tracker's output. window: tracking mode's bands, or
+// null. Returns an error or nullptr.
+const char* run_frame(const ChainFrame& frame, Input input, const qt::BandWindow* window,
+                      bool& frame_open, Instructions& n, uint64_t& text_hash,
+                      qt::TrackedQuad& track) {
     const Pgm pgm = parse_pgm(frame.begin, frame.end, kWidth, kHeight);
     if (pgm.error != nullptr) return pgm.error;
     // A frame left open by an earlier failed one is no fault of this one.
-    qt::Status s = g_det.begin_frame(pgm.width, pgm.height, qt::BoardParams{});
+    qt::Status s = g_det.begin_frame(pgm.width, pgm.height, qt::BoardParams{}, window);
     if (s == qt::Status::previous_frame_incomplete && frame_open) s = qt::Status::ok;
     if (s != qt::Status::ok) return qt::status_name(s);
     frame_open = true;
 
-    if (input == Input::camera_rows) {
+    if (input != Input::fpga_beats) {
         n.stage[kRows] = push_camera_rows(pgm, g_line, s, [](const uint8_t* line, uint16_t w) {
             return g_det.push_row(line, w);
         });
@@ -188,14 +199,14 @@ const char* run_frame(const ChainFrame& frame, Input input, bool& frame_open, In
     frame_open = false;
 
     t = ticks_now();
-    const qt::TrackedQuad track = g_tracker.step(g_det.lines().lines(), g_det.lines().line_count(),
-                                                 g_det.quads(), g_det.quad_count());
+    track = g_tracker.step(g_det.lines().lines(), g_det.lines().line_count(), g_det.quads(),
+                           g_det.quad_count());
     n.stage[kTrack] = ticks_to_instructions(ticks_now() - t);
 
     text_hash = kFnvBasis;
     qt::write_frame_text(frame.name, g_det, status, track, g_tracker.stats().lost_reason,
                          [&](const char* text, size_t length) {
-                             if (input == Input::camera_rows) sh_write(text);
+                             if (input != Input::fpga_beats) sh_write(text);
                              text_hash = fnv1a(text_hash, text, length);
                          });
     const qt::LineStats& ls = g_det.lines().stats();
@@ -268,8 +279,9 @@ unsigned camera_pass(Instructions* worst, Instructions* per_frame,
         sh_write("\n");
         for (unsigned f = 0; f < chain.count; ++f) {
             per_frame[f] = Instructions{};
-            const char* error = run_frame(chain.frames[f], Input::camera_rows, frame_open,
-                                          per_frame[f], text_hash[c][f]);
+            qt::TrackedQuad track;
+            const char* error = run_frame(chain.frames[f], Input::camera_rows, nullptr, frame_open,
+                                          per_frame[f], text_hash[c][f], track);
             if (error != nullptr) {
                 ++failures;
                 print_failure("", chain.frames[f].name, error);
@@ -306,8 +318,9 @@ unsigned fpga_pass(Instructions* per_frame, const uint64_t (*text_hash)[kMaxCase
         for (unsigned f = 0; f < chain.count; ++f) {
             per_frame[f] = Instructions{};
             uint64_t hash = 0;
-            const char* error =
-                run_frame(chain.frames[f], Input::fpga_beats, frame_open, per_frame[f], hash);
+            qt::TrackedQuad track;
+            const char* error = run_frame(chain.frames[f], Input::fpga_beats, nullptr, frame_open,
+                                          per_frame[f], hash, track);
             ++frames;
             if (error == nullptr && hash == text_hash[c][f]) {
                 ++equal;
@@ -330,6 +343,56 @@ unsigned fpga_pass(Instructions* per_frame, const uint64_t (*text_hash)[kMaxCase
     sh_write(" of ");
     sh_dec(frames);
     sh_write(" frames with edges from the FPGA give the camera rows' result text\n");
+    return failures;
+}
+
+// The camera rows again in tracking mode: each case with a new tracker and tracking mode (track
+// ids from 1 in every case, as the host's chain_texts() in tracking mode), each frame after the
+// first through the window planned from the frame before; texts printed as NAME-bands. Returns
+// the frames that failed; *worst_total gets the worst frame's instructions, *banded the frames
+// that ran in bands and *frames all of them.
+unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_total,
+                    unsigned* banded, unsigned* frames) {
+    unsigned failures = 0;
+    start_tracker();
+    for (unsigned c = 0; c < kCases; ++c) {
+        const ChainCase& chain = kChainCases[c];
+        g_tracker.reset();
+        g_mode.reset();
+        const qt::BandWindow* window = nullptr;
+        Instructions bands_worst;
+        sh_write("=== chain ");
+        sh_write(chain.name);
+        sh_write("-bands\n");
+        for (unsigned f = 0; f < chain.count; ++f) {
+            per_frame[f] = Instructions{};
+            uint64_t hash = 0;
+            qt::TrackedQuad track;
+            *banded += window != nullptr;
+            ++*frames;
+            const char* error = run_frame(chain.frames[f], Input::bands, window, frame_open,
+                                          per_frame[f], hash, track);
+            const uint64_t t = ticks_now();
+            window = g_mode.plan(track);
+            per_frame[f].stage[kTrack] += ticks_to_instructions(ticks_now() - t);
+            if (error != nullptr) {
+                ++failures;
+                print_failure("bands ", chain.frames[f].name, error);
+            }
+        }
+        sh_write("=== end ");
+        sh_write(chain.name);
+        sh_write("-bands\n");
+        for (unsigned f = 0; f < chain.count; ++f) {
+            print_instructions("", chain.frames[f].name, per_frame[f], Input::bands);
+            keep_worst(bands_worst, per_frame[f]);
+            if (per_frame[f].total() > *worst_total) *worst_total = per_frame[f].total();
+        }
+        if (chain.count > 1)
+            print_instructions("median ", chain.name, median_of(per_frame, chain.count),
+                               Input::bands);
+        print_instructions("worst ", chain.name, bands_worst, Input::bands);
+    }
     return failures;
 }
 
@@ -379,6 +442,16 @@ int main() {
         if (worst[c].total() > worst_total) worst_total = worst[c].total();
     }
     failures += fpga_pass(per_frame, text_hash, frame_open);
+    uint64_t bands_worst = 0;
+    unsigned banded = 0, frames = 0;
+    failures += bands_pass(per_frame, frame_open, &bands_worst, &banded, &frames);
+    sh_write("bands: ");
+    sh_dec(banded);
+    sh_write(" of ");
+    sh_dec(frames);
+    sh_write(" frames in bands; worst frame ");
+    sh_dec(bands_worst);
+    sh_write(" instructions\n");
     report_budget(worst_total);
 
     // Painted words left at the bottom of the stack: fewer than this and the stack may have
