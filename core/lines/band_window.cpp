@@ -116,4 +116,55 @@ bool BandWindow::rows(uint16_t height, int32_t* first, int32_t* last) const {
     return *first <= *last;
 }
 
+void BandWindow::begin_frame(uint16_t width, uint16_t height) {
+    width_ = width;
+    height_ = height;
+    for (Row& r : ring_) r.y = -1;
+    grown_row_ = -1;
+}
+
+uint8_t BandWindow::row(int32_t y, const ColumnSpan** spans) {
+    Row& r = ring_[y & 3];
+    if (r.y != y) {
+        r.y = y;
+        r.n = y >= 0 && y < height_ ? this->spans(y, y, 0, width_, r.spans) : 0;
+    }
+    *spans = r.spans;
+    return r.n;
+}
+
+uint8_t BandWindow::grown(int32_t r, const ColumnSpan** spans) {
+    *spans = grown_;
+    if (r == grown_row_) return grown_n_;  // asked twice: by the kernel and the edge stage
+    grown_row_ = r;
+    ColumnSpan* out = grown_;
+    int32_t begin[kMaxGrown], end[kMaxGrown];
+    uint8_t n = 0;
+    for (int32_t y = r - 1; y <= r + 1; ++y) {
+        const ColumnSpan* s = nullptr;
+        const uint8_t count = row(y, &s);
+        for (uint8_t i = 0; i < count; ++i) {
+            const int32_t b = s[i].begin > 0 ? s[i].begin - 1 : 0;
+            const int32_t e = s[i].end < width_ ? s[i].end + 1 : width_;
+            int32_t k = n++;
+            for (; k > 0 && begin[k - 1] > b; --k) {
+                begin[k] = begin[k - 1];
+                end[k] = end[k - 1];
+            }
+            begin[k] = b;
+            end[k] = e;
+        }
+    }
+    uint8_t count = 0;
+    for (uint8_t i = 0; i < n; ++i) {
+        if (count > 0 && begin[i] <= out[count - 1].end) {
+            if (end[i] > out[count - 1].end) out[count - 1].end = static_cast<uint16_t>(end[i]);
+            continue;
+        }
+        out[count++] = ColumnSpan{static_cast<uint16_t>(begin[i]), static_cast<uint16_t>(end[i])};
+    }
+    grown_n_ = count;
+    return count;
+}
+
 }  // namespace qt

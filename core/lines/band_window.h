@@ -44,6 +44,16 @@ public:
     // none does.
     bool rows(uint16_t height, int32_t* first, int32_t* last) const;
 
+    // The lines stage's view, a frame at a time: row(y) gives row y's spans (computed once a
+    // frame: the edge decisions of row y read them), grown(r) the columns where packed
+    // gradient row r must hold what the full row would (the spans of rows r − 1 .. r + 1 grown
+    // by a pixel either way, where those decisions read it). Rows are asked for in increasing
+    // order, at most three behind the newest.
+    static constexpr uint8_t kMaxGrown = 3 * kMaxSpans;
+    void begin_frame(uint16_t width, uint16_t height);
+    uint8_t row(int32_t y, const ColumnSpan** spans);
+    uint8_t grown(int32_t r, const ColumnSpan** spans);
+
 private:
     int32_t px_[4][4] = {}, py_[4][4] = {};  // band b's rectangle, vertices in order, 1/16 px
     // Edge v of band b (vertex v to v + 1): dx/dy in Q16, 0 for a horizontal edge (set_quad
@@ -52,6 +62,17 @@ private:
     int32_t slope_q16_[4][4] = {};
     int32_t ymin_[4] = {}, ymax_[4] = {};  // band b's rows, 1/16 px
     bool active_ = false;
+    // The frame's rows: the last four rows' spans.
+    struct Row {
+        int32_t y = -1;
+        uint8_t n = 0;
+        ColumnSpan spans[kMaxSpans];
+    };
+    Row ring_[4];
+    int32_t grown_row_ = -1;  // the row grown() gave last, and its spans
+    uint8_t grown_n_ = 0;
+    ColumnSpan grown_[kMaxGrown];
+    uint16_t width_ = 0, height_ = 0;
 };
 
 }  // namespace qt

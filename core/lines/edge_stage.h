@@ -53,17 +53,17 @@ struct NmsRowKernel {
     using value_type = uint16_t;
     static constexpr uint16_t kPad = 1;
     uint16_t edge_threshold = 1;
-    const BandWindow* window = nullptr;  // null or inactive: the whole row
+    BandWindow* bands = nullptr;  // active bands (band_window.h), or null: the whole row
     void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
                     uint16_t width, uint16_t y, uint16_t* out) const {
-        if (window == nullptr || !window->active()) {
+        if (bands == nullptr) {
             gradient_nms_row(above, center, below, width, edge_threshold, out);
             return;
         }
         out[0] = 0;
         out[width + 1] = 0;
-        ColumnSpan spans[BandWindow::kMaxSpans];
-        const uint8_t n = window->spans(y - 1, y + 1, 1, width, spans);
+        const ColumnSpan* spans = nullptr;
+        const uint8_t n = bands->grown(y, &spans);
         for (uint8_t i = 0; i < n; ++i)
             gradient_nms_span(above, center, below, width, spans[i].begin, spans[i].end,
                               edge_threshold, out);
@@ -83,11 +83,11 @@ public:
     // Starts a frame; edges go to `out` (emptied here). edge_threshold: L1 magnitude in grey
     // levels, 1..510. bad_size when a dimension is 0, width > MaxWidth or height exceeds the
     // list's rows.
-    // window: null or inactive, every pixel; else only the pixels its bands reach.
+    // bands: null, every pixel; else only the pixels of its active bands (band_window.h).
     Status begin_frame(uint16_t width, uint16_t height, uint16_t edge_threshold, EdgeList& out,
-                       const BandWindow* window = nullptr) {
+                       BandWindow* bands = nullptr) {
         in_frame_ = false;
-        window_ = window != nullptr && window->active() ? window : nullptr;
+        bands_ = bands;
         if (width == 0 || height == 0 || width > MaxWidth) return Status::bad_size;
         const Status s = out.begin_frame(height);
         if (s != Status::ok) return s;
@@ -114,7 +114,18 @@ public:
     Status push_packed_row(const uint16_t* packed, uint16_t width) {
         const Status s = check_row(width);
         if (s != Status::ok) return s;
-        memcpy(rows_[next_row_ % 3], packed, (width + 2u) * sizeof(uint16_t));
+        uint16_t* slot = rows_[next_row_ % 3];
+        if (bands_ == nullptr) {
+            memcpy(slot, packed, (width + 2u) * sizeof(uint16_t));
+        } else {  // what the window's decisions read: the row's pads and its grown spans
+            slot[0] = 0;
+            slot[width + 1] = 0;
+            const ColumnSpan* spans = nullptr;
+            const uint8_t n = bands_->grown(next_row_, &spans);
+            for (uint8_t i = 0; i < n; ++i)
+                memcpy(slot + spans[i].begin + 1, packed + spans[i].begin + 1,
+                       (spans[i].end - spans[i].begin) * sizeof(uint16_t));
+        }
         advance();
         return Status::ok;
     }
@@ -157,12 +168,12 @@ private:
 
     // Row y's edges: every pixel's, or those of the window's spans.
     void decide(const uint16_t* a, const uint16_t* c, const uint16_t* b, uint16_t y) {
-        if (window_ == nullptr) {
+        if (bands_ == nullptr) {
             nms_row(a, c, b, width_, y, threshold(), *out_);
             return;
         }
-        ColumnSpan spans[BandWindow::kMaxSpans];
-        const uint8_t n = window_->spans(y, y, 0, width_, spans);
+        const ColumnSpan* spans = nullptr;
+        const uint8_t n = bands_->row(y, &spans);
         if (n == 0) return;
         out_->begin_row(y);
         for (uint8_t i = 0; i < n; ++i)
@@ -172,7 +183,7 @@ private:
     uint16_t rows_[3][MaxWidth + 2] = {};
     uint16_t zero_[MaxWidth + 2] = {};
     EdgeList* out_ = nullptr;
-    const BandWindow* window_ = nullptr;
+    BandWindow* bands_ = nullptr;
     uint16_t width_ = 0, height_ = 0, threshold_ = 0, next_row_ = 0;
     bool in_frame_ = false;
 };

@@ -91,7 +91,7 @@ public:
     // joins edges through pixels outside the bands) or gradient rows; it must stay unchanged
     // until the frame's last row.
     Status begin_frame(uint16_t width, uint16_t height, const LineParams& params,
-                       const BandWindow* window = nullptr) {
+                       BandWindow* window = nullptr) {
         params_ = params;
         stats_ = LineStats{};
         segment_count_ = line_count_ = 0;
@@ -103,8 +103,11 @@ public:
         if (height > MaxHeight) return Status::bad_size;
         edges_view_ = edges_.view();
         gradient_.kernel.edge_threshold = params.edge_threshold;
-        const BandWindow* bands = params.front_end == EdgeFrontEnd::canny ? nullptr : window;
-        gradient_.kernel.window = bands;
+        const bool banded =
+            window != nullptr && window->active() && params.front_end != EdgeFrontEnd::canny;
+        if (banded) window->begin_frame(width, height);
+        BandWindow* bands = banded ? window : nullptr;
+        gradient_.kernel.bands = bands;
         Status s = gradient_.begin_frame(width, height);
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
         const Status e =

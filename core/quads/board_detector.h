@@ -45,7 +45,7 @@ public:
 
     // window: tracking mode's bands (LineDetector::begin_frame); null: the whole frame.
     Status begin_frame(uint16_t width, uint16_t height, const BoardParams& params,
-                       const BandWindow* window = nullptr) {
+                       BandWindow* window = nullptr) {
         params_ = params;
         quad_count_ = 0;
         quad_stats_ = QuadStats{};

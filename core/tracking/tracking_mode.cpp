@@ -2,7 +2,7 @@
 
 namespace qt {
 
-const BandWindow* TrackingMode::plan(const TrackedQuad& tracked) {
+BandWindow* TrackingMode::plan(const TrackedQuad& tracked) {
     const bool held = tracked.state != TrackState::none && tracked.detected == 0xFu;
     const bool same_board = held && last_id_ != 0 && tracked.track_id == last_id_;
     q16_16 x[4], y[4];

@@ -25,8 +25,8 @@ struct TrackingModeParams {
     bool enabled = true;
     // Half width of a band, px: the tracker's gate (12 px) and what a corner's motion may
     // change from one frame to the next.
-    q16_16 half_width = q16_16::from_int(16);
-    q16_16 reach = q16_16::from_int(8);  // beyond each corner along the side, px
+    q16_16 half_width = q16_16::from_int(8);
+    q16_16 reach = q16_16::from_int(4);  // beyond each corner along the side, px
     uint16_t full_every = 16;            // frames: every full_every-th frame is whole
 };
 
@@ -50,7 +50,7 @@ public:
 
     // The window of the next frame from this frame's tracked board: the bands, or null for the
     // whole frame. The window stays valid until the next plan() or reset().
-    const BandWindow* plan(const TrackedQuad& tracked);
+    BandWindow* plan(const TrackedQuad& tracked);
     // Forget the board: the next frame is whole.
     void reset();
     const TrackingModeStats& stats() const { return stats_; }

@@ -85,7 +85,7 @@ std::vector<std::string> chain_texts(const std::vector<ChainCase>& cases, bool t
     for (const ChainCase& c : cases) {
         tracker.reset();
         mode.reset();
-        const BandWindow* window = nullptr;
+        BandWindow* window = nullptr;
         std::string text;
         for (size_t k = 0; k < c.frames.size(); ++k) {
             const io::GreyImage& frame = c.frames[k];

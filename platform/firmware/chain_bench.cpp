@@ -158,7 +158,7 @@ constexpr uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
 // One frame through the chain, timed; its text printed (camera rows only, whole or in bands)
 // and hashed into text_hash; `track` the tracker's output. window: tracking mode's bands, or
 // null. Returns an error or nullptr.
-const char* run_frame(const ChainFrame& frame, Input input, const qt::BandWindow* window,
+const char* run_frame(const ChainFrame& frame, Input input, qt::BandWindow* window,
                       bool& frame_open, Instructions& n, uint64_t& text_hash,
                       qt::TrackedQuad& track) {
     const Pgm pgm = parse_pgm(frame.begin, frame.end, kWidth, kHeight);
@@ -359,7 +359,7 @@ unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_t
         const ChainCase& chain = kChainCases[c];
         g_tracker.reset();
         g_mode.reset();
-        const qt::BandWindow* window = nullptr;
+        qt::BandWindow* window = nullptr;
         Instructions bands_worst;
         sh_write("=== chain ");
         sh_write(chain.name);

@@ -42,8 +42,7 @@ using Spans = std::vector<std::pair<int, int>>;
 LineDetectorVga g_lines;
 
 // The frame's edge points (raw words, states fresh), before PPHT consumes them.
-std::vector<edge_point> edges_of(const io::GreyImage& img, const BandWindow* window,
-                                 bool gradient_rows) {
+std::vector<edge_point> edges_of(const io::GreyImage& img, BandWindow* window, bool gradient_rows) {
     REQUIRE(g_lines.begin_frame(static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height),
                                 LineParams{}, window) == Status::ok);
     if (gradient_rows) {
