@@ -1,7 +1,7 @@
-// photo_chain PHOTO_DIR OUT_DIR: writes OUT_DIR/photos_qvga_NN.pgm, photos_qvga.chain.txt and
-// photos_qvga-bands.chain.txt (tracking mode) (photo_chain.h) for the firmware's chain case of
-// real photographs; built and run at build time by the Cortex-M presets
-// (platform/firmware/CMakeLists.txt).
+// photo_chain PHOTO_DIR OUT_DIR: writes the frames (NAME_NN.pgm) and texts (NAME.chain.txt,
+// NAME-bands.chain.txt in tracking mode) of the firmware's chain cases of real photographs
+// (photo_chain.h): photos_qvga and photoseq1_qvga .. photoseq3_qvga; built and run at build time
+// by the Cortex-M presets (platform/firmware/CMakeLists.txt).
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -22,8 +22,9 @@ int main(int argc, char** argv) {
     }
     // After the committed cases, as the firmware runs them: track ids run on from case to case.
     std::vector<qt::vec::ChainCase> cases = qt::vec::chain_cases();
+    const size_t first = cases.size();
     cases.push_back(qt::vec::photo_chain_case(photos));
-    const qt::vec::ChainCase& photo_case = cases.back();
+    for (qt::vec::ChainCase& c : qt::vec::photo_sequence_cases(photos)) cases.push_back(c);
     const std::string dir = argv[2];
     auto write = [&](const std::string& name, const std::string& text) {
         std::ofstream f(dir + "/" + name, std::ios::binary);
@@ -32,11 +33,14 @@ int main(int argc, char** argv) {
             std::exit(1);
         }
     };
-    for (size_t k = 0; k < photo_case.frames.size(); ++k)
-        write(qt::vec::frame_name(photo_case, k) + ".pgm",
-              qt::vec::format_pgm(photo_case.frames[k]));
-    for (const bool tracking_mode : {false, true})
-        write(qt::vec::text_name(photo_case, tracking_mode) + ".chain.txt",
-              qt::vec::chain_texts(cases, tracking_mode).back());
+    for (const bool tracking_mode : {false, true}) {
+        const std::vector<std::string> texts = qt::vec::chain_texts(cases, tracking_mode);
+        for (size_t i = first; i < cases.size(); ++i)
+            write(qt::vec::text_name(cases[i], tracking_mode) + ".chain.txt", texts[i]);
+    }
+    for (size_t i = first; i < cases.size(); ++i)
+        for (size_t k = 0; k < cases[i].frames.size(); ++k)
+            write(qt::vec::frame_name(cases[i], k) + ".pgm",
+                  qt::vec::format_pgm(cases[i].frames[k]));
     return 0;
 }
