@@ -267,11 +267,11 @@ run_bench() {
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench 2>&1 ;;
         budgets)
-            run_firmware cortex-m4 mps2-an386 chain_bench 2>&1 | grep -E '^(budget|work|fpga|chain:|FAIL)' ;;
+            run_firmware cortex-m4 mps2-an386 chain_bench 2>&1 | grep -E '^(budget|work|fpga|bands|chain:|FAIL)' ;;
         budgets-m3)
-            run_firmware cortex-m3 mps2-an385 chain_bench 2>&1 | grep -E '^(budget|work|fpga|chain:|FAIL)' ;;
+            run_firmware cortex-m3 mps2-an385 chain_bench 2>&1 | grep -E '^(budget|work|fpga|bands|chain:|FAIL)' ;;
         budgets-m4f)
-            run_firmware cortex-m4f mps2-an386 chain_bench 2>&1 | grep -E '^(budget|work|fpga|chain:|FAIL)' ;;
+            run_firmware cortex-m4f mps2-an386 chain_bench 2>&1 | grep -E '^(budget|work|fpga|bands|chain:|FAIL)' ;;
         target-m4f)
             run_firmware cortex-m4f mps2-an386 target_bench 2>&1 | grep -E '^(budget|target:|FAIL)' ;;
         budget-table)

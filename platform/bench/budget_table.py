@@ -19,10 +19,12 @@ stack).
 """
 import argparse, glob, os, re, subprocess, sys
 
-# The chain cases of chain_bench and the kind of frame each is.
-KINDS = [("board_motion_qvga", "board"), ("clutter_qvga", "clutter"),
-         ("photos_qvga", "real photograph"), ("stress_qvga", "stress (noise, strokes)")]
-FRAME_RE = {head: re.compile(r"^%s (\S+)((?: \w+=\d+)+)$" % head) for head in ("budget", "fpga")}
+# The chain cases of chain_bench (the start of their frames' names) and the kind of frame each is.
+KINDS = [("board_motion_qvga_", "board"), ("clutter_qvga_", "clutter"),
+         ("photos_qvga_", "real photograph"), ("photoseq", "real-photograph sequence"),
+         ("stress_qvga_", "stress (noise, strokes)")]
+FRAME_RE = {head: re.compile(r"^%s (\S+)((?: \w+=\d+)+)$" % head)
+            for head in ("budget", "fpga", "bands")}
 
 
 def frames_of(path, head="budget"):
@@ -47,7 +49,7 @@ def chain_cases(chains, head):
     for part, path in parts(chains):
         frames = frames_of(path, head)
         for case, kind in KINDS:
-            mine = [f for f in frames if f[0].startswith(case + "_")]
+            mine = [f for f in frames if f[0].startswith(case)]
             if not mine:
                 sys.exit("budget_table: no %s frame of %s in %s" % (head, case, path))
             yield part, kind, mine
@@ -55,7 +57,7 @@ def chain_cases(chains, head):
 
 def summary(frames):
     """Per-stage upper median, per-stage worst, worst single-frame total."""
-    stages = [k for k in frames[0][1] if k != "total"]
+    stages = [k for k in frames[0][1] if k not in ("total", "banded")]
     med, worst = {}, {}
     for s in stages:
         values = sorted(f[1][s] for f in frames)
@@ -159,6 +161,37 @@ def main():
         print("%s, board frames with edges from the FPGA, after the edges: median %d, worst %d "
               "instructions (the Cortex-M4's aim 800000: %s)" %
               (part, med, worst, "met" if worst <= 800000 else "NOT met"))
+    print()
+
+    print("Tracking mode (chain_bench's third pass, tracking/tracking_mode.h): each frame after a "
+          "case's first through the bands planned from the frame before when the board was held "
+          "with all four sides, the whole frame otherwise; the frames that ran in bands, and "
+          "every frame of those cases (aims on real-photograph sequences while tracked: median "
+          "<= 800 000, worst <= 2 400 000):")
+    print()
+    rows, verdicts = [], []
+    for part, kind, mine in chain_cases(args.chain, "bands"):
+        if kind not in ("board", "real-photograph sequence"):
+            continue
+        banded = [f for f in mine if f[1].get("banded") == 1]
+        for label, frames in (("in bands", banded), ("every frame", mine)):
+            if not frames:
+                continue
+            stages, med, worst, wf = summary(frames)
+            rows.append([part, kind, label, len(frames), "median"] + [med[s] for s in stages] +
+                        [med["total"], ""])
+            rows.append([part, kind, label, len(frames), "worst"] + [worst[s] for s in stages] +
+                        [worst["total"], "%d (%s)" % (wf[1]["total"], wf[0])])
+            if kind == "real-photograph sequence":
+                totals = sorted(f[1]["total"] for f in frames)
+                m, w = totals[len(totals) // 2], totals[-1]
+                verdicts.append("%s, %s, %s: median %d (%s), worst %d (%s)" % (
+                    part, kind, label, m, "met" if m <= 800000 else "NOT met", w,
+                    "met" if w <= 2400000 else "NOT met"))
+    table(["part", "kind of frame", "frames", "count", "statistic"] + stages +
+          ["total", "worst frame"], rows)
+    for v in verdicts:
+        print(v)
     print()
 
     for part, path in parts(args.target):

@@ -26,7 +26,7 @@
 // case's first through the bands TrackingMode planned from the frame before. Its texts are
 // printed between "=== chain NAME-bands" and "=== end NAME-bands" lines, which the ctest
 // compares with the host's NAME-bands.chain.txt; "bands" lines give its instructions per frame
-// and stage (track includes the planning), median and worst.
+// and stage (track includes the planning; banded=1: the frame ran in bands), median and worst.
 //
 // Instructions come from SysTick ticks, 40 instructions each under -icount shift=0
 // (cycle_counter.h); a reading is quantised to 40 and includes one ticks_now() call. Stages:
@@ -134,7 +134,7 @@ void print_field(const char* name, uint64_t value) {
 // "budget <prefix><name> rows=... total=..." ("fpga <prefix><name> beats=... total=..." for
 // the frames with edges from the FPGA, "bands ..." for tracking mode's).
 void print_instructions(const char* prefix, const char* name, const Instructions& n,
-                        Input input = Input::camera_rows) {
+                        Input input = Input::camera_rows, int banded = -1) {
     const bool fpga = input == Input::fpga_beats;
     sh_write(fpga ? "fpga " : input == Input::bands ? "bands " : "budget ");
     sh_write(prefix);
@@ -142,6 +142,7 @@ void print_instructions(const char* prefix, const char* name, const Instructions
     for (unsigned s = 0; s < kStages; ++s)
         print_field(fpga ? kFpgaStageNames[s] : kStageNames[s], n.stage[s]);
     print_field("total", n.total());
+    if (banded >= 0) print_field("banded", static_cast<uint64_t>(banded));  // tracking mode
     sh_write("\n");
 }
 
@@ -361,6 +362,7 @@ unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_t
         g_mode.reset();
         qt::BandWindow* window = nullptr;
         Instructions bands_worst;
+        bool in_bands[kMaxCaseFrames] = {};
         sh_write("=== chain ");
         sh_write(chain.name);
         sh_write("-bands\n");
@@ -368,7 +370,8 @@ unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_t
             per_frame[f] = Instructions{};
             uint64_t hash = 0;
             qt::TrackedQuad track;
-            *banded += window != nullptr;
+            in_bands[f] = window != nullptr;
+            *banded += in_bands[f];
             ++*frames;
             const char* error = run_frame(chain.frames[f], Input::bands, window, frame_open,
                                           per_frame[f], hash, track);
@@ -384,7 +387,7 @@ unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_t
         sh_write(chain.name);
         sh_write("-bands\n");
         for (unsigned f = 0; f < chain.count; ++f) {
-            print_instructions("", chain.frames[f].name, per_frame[f], Input::bands);
+            print_instructions("", chain.frames[f].name, per_frame[f], Input::bands, in_bands[f]);
             keep_worst(bands_worst, per_frame[f]);
             if (per_frame[f].total() > *worst_total) *worst_total = per_frame[f].total();
         }
