@@ -1,5 +1,6 @@
 #include "lines/band_window.h"
 
+#include "base/angle.h"
 #include "base/floor_div.h"
 #include "base/isqrt.h"
 
@@ -13,8 +14,11 @@ int32_t to_sub(q16_16 v) { return static_cast<int32_t>(floor_div(v.raw, 65536 / 
 
 }  // namespace
 
-void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_width, q16_16 reach) {
+void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_width, q16_16 reach,
+                          angle_t max_angle) {
     const int32_t hw = to_sub(half_width), ext = to_sub(reach);
+    half_width_ = hw;
+    sin_max_q14_ = static_cast<int32_t>(sin_cos(max_angle).sin.raw >> 16);
     for (int b = 0; b < 4; ++b) {
         const int32_t ax = to_sub(x[b]), ay = to_sub(y[b]);
         const int32_t bx = to_sub(x[(b + 1) & 3]), by = to_sub(y[(b + 1) & 3]);
@@ -26,6 +30,10 @@ void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_widt
                       along_y = static_cast<int32_t>(uy * ext / 16384);
         const int32_t across_x = static_cast<int32_t>(-uy * hw / 16384),
                       across_y = static_cast<int32_t>(ux * hw / 16384);
+        side_x_[b] = ax;
+        side_y_[b] = ay;
+        side_ux_[b] = static_cast<int32_t>(ux);
+        side_uy_[b] = static_cast<int32_t>(uy);
         const int32_t sx = ax - along_x, sy = ay - along_y;  // the side's ends, extended
         const int32_t ex = bx + along_x, ey = by + along_y;
         // Rounding above moves a vertex by at most 1/16 px inwards: widen by that much.
@@ -101,6 +109,23 @@ uint8_t BandWindow::spans(int32_t first, int32_t last, int32_t grow, uint16_t wi
         out[count++] = ColumnSpan{static_cast<uint16_t>(begin[i]), static_cast<uint16_t>(end[i])};
     }
     return count;
+}
+
+bool BandWindow::along_a_side(const Segment& line) const {
+    const int32_t x1 = to_sub(line.x1), y1 = to_sub(line.y1);
+    const int32_t x2 = to_sub(line.x2), y2 = to_sub(line.y2);
+    const int64_t dx = x2 - x1, dy = y2 - y1;
+    const int64_t len = isqrt64(static_cast<uint64_t>(dx * dx + dy * dy));
+    const int64_t mx = (int64_t{x1} + x2) / 2, my = (int64_t{y1} + y2) / 2;
+    for (int b = 0; b < 4; ++b) {
+        // |u × d| <= sin(max_angle)·|d|, both sides Q14 · 1/16 px.
+        const int64_t cross = side_ux_[b] * dy - side_uy_[b] * dx;
+        if ((cross < 0 ? -cross : cross) > sin_max_q14_ * len) continue;
+        // The midpoint's distance from the side's line, Q14 · 1/16 px.
+        const int64_t off = side_ux_[b] * (my - side_y_[b]) - side_uy_[b] * (mx - side_x_[b]);
+        if ((off < 0 ? -off : off) <= (int64_t{half_width_} + 2 * kSub) * 16384) return true;
+    }
+    return false;
 }
 
 bool BandWindow::rows(uint16_t height, int32_t* first, int32_t* last) const {

@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "base/fixed.h"
+#include "lines/segment.h"
 
 namespace qt {
 
@@ -29,7 +30,14 @@ public:
 
     // The bands around the quadrangle (x[i], y[i]) (px; side i from corner i to corner i + 1).
     // half_width, reach: px, 0..256. A side shorter than 1/16 px gives a square band.
-    void set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_width, q16_16 reach);
+    // max_angle: the lines along_a_side() keeps turn at most this far from their band's side.
+    void set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_width, q16_16 reach,
+                  angle_t max_angle);
+
+    // Whether the line runs along one of the sides: within max_angle of its direction, with
+    // its midpoint within half_width (and 2 px) of the side's line. In a banded frame a line
+    // that crosses a band is a background edge the band cuts short, not a side.
+    bool along_a_side(const Segment& line) const;
     // No bands: the whole frame.
     void clear() { active_ = false; }
     bool active() const { return active_; }
@@ -61,6 +69,10 @@ private:
     // library call on a Cortex-M).
     int32_t slope_q16_[4][4] = {};
     int32_t ymin_[4] = {}, ymax_[4] = {};  // band b's rows, 1/16 px
+    // Side b's start (1/16 px) and unit direction (Q14); the bands' half width (1/16 px) and
+    // sin(max_angle) (Q14).
+    int32_t side_x_[4] = {}, side_y_[4] = {}, side_ux_[4] = {}, side_uy_[4] = {};
+    int32_t half_width_ = 0, sin_max_q14_ = 0;
     bool active_ = false;
     // The frame's rows: the last four rows' spans.
     struct Row {

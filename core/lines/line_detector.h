@@ -96,6 +96,7 @@ public:
         stats_ = LineStats{};
         segment_count_ = line_count_ = 0;
         width_ = height_ = 0;  // until the frame has begun: finish() then says not_in_frame
+        window_ = nullptr;
         // Rows missing from the open frame: the edge stage knows, as both paths feed it (the
         // gradient stage is never fed by push_gradient_row, so it cannot tell).
         const bool abandoned = open_ && edge_stage_.in_frame();
@@ -107,6 +108,7 @@ public:
             window != nullptr && window->active() && params.front_end != EdgeFrontEnd::canny;
         if (banded) window->begin_frame(width, height);
         BandWindow* bands = banded ? window : nullptr;
+        window_ = bands;
         gradient_.kernel.bands = bands;
         Status s = gradient_.begin_frame(width, height);
         if (s != Status::ok && s != Status::previous_frame_incomplete) return s;
@@ -222,6 +224,16 @@ public:
     const Segment* lines() const { return lines_; }
     uint16_t line_count() const { return line_count_; }
     const LineStats& stats() const { return stats_; }
+    // The frame's bands (begin_frame's window when it applies), or null: the whole frame.
+    const BandWindow* window() const { return window_; }
+    // Keeps the lines for which keep(line) is true, in order (line_count() shrinks).
+    template <class Keep>
+    void keep_lines(Keep&& keep) {
+        uint16_t n = 0;
+        for (uint16_t i = 0; i < line_count_; ++i)
+            if (keep(lines_[i])) lines_[n++] = lines_[i];
+        line_count_ = n;
+    }
     // Puts a refined line in place of line i (i < line_count(); others are ignored).
     void replace_line(uint16_t i, const Segment& s) {
         if (i < line_count_) lines_[i] = s;
@@ -264,6 +276,7 @@ private:
     SmoothRows<MaxWidth> smooth_;                     // canny: pixels -> smoothed pixels
     GradientStage<MaxWidth, NmsRowKernel> gradient_;  // pixels -> packed NMS rows, no words
     EdgeStage<MaxWidth> edge_stage_;
+    const BandWindow* window_ = nullptr;  // this frame's bands, or null
     EdgeBeatFeed feed_;  // the frame's edges from the FPGA's beats (push_edge_beats)
     EdgeListStorage<EdgeCapacity, MaxHeight> edges_;
     EdgeList edges_view_ = edges_.view();

@@ -74,6 +74,10 @@ public:
     Status finish(Mark&& mark) {
         const Status l = lines_.finish(mark);
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
+        // Tracking mode: only the lines along a band's side can be the board's sides; the
+        // others are background edges the bands cut short across them.
+        if (const BandWindow* w = lines_.window())
+            lines_.keep_lines([w](const Segment& s) { return w->along_a_side(s); });
         const QuadSearchMemory memory{pairs_, PairCapacity,  geometry_,
                                       quads_, MaxCandidates, completed_};
         const Status q = detect_quads(lines_.lines(), lines_.line_count(), lines_.width(),
@@ -110,7 +114,10 @@ private:
     // edge evidence on its refitted sides (quad and sides then refined, quad.score the
     // evidence), rule 3 again for the refitted corners, no sides running on past its corners,
     // a clear inside, few lines across. False at the first check it fails, counted in the stats.
+    // A banded frame (tracking mode) makes no check of what its bands do not see: the inside
+    // and the sides' lines beyond the corners.
     bool passes_checks(uint16_t k, Quad& quad, Segment (&sides)[4]) {
+        const bool whole = lines_.window() == nullptr;
         const Segment* side_lines[4];
         for (int i = 0; i < 4; ++i)
             side_lines[i] =
@@ -125,14 +132,14 @@ private:
             ++quad_stats_.rejected_inside;
             return false;
         }
-        if (params_.refine.max_junction_corners != kCheckOff &&
+        if (whole && params_.refine.max_junction_corners != kCheckOff &&
             junction_corners(lines_.edges(), quad.corners, params_.refine) >
                 params_.refine.max_junction_corners) {
             ++quad_stats_.rejected_junctions;
             return false;
         }
         const uint8_t inside_limit = params_.refine.max_inside_edge_cells_percent;
-        if (inside_limit != kCheckOff &&  // off: nothing is counted
+        if (whole && inside_limit != kCheckOff &&  // off: nothing is counted
             !interior_clear(
                 count_inside_edges(lines_.edges(), quad.corners, params_.refine.inside_margin),
                 lines_.height(), inside_limit)) {

@@ -24,7 +24,7 @@ BandWindow* TrackingMode::plan(const TrackedQuad& tracked) {
     }
     ++banded_run_;
     ++stats_.banded;
-    window_.set_quad(x, y, params_.half_width, params_.reach);
+    window_.set_quad(x, y, params_.half_width, params_.reach, params_.line_angle);
     return &window_;
 }
 

@@ -28,6 +28,9 @@ struct TrackingModeParams {
     q16_16 half_width = q16_16::from_int(8);
     q16_16 reach = q16_16::from_int(4);  // beyond each corner along the side, px
     uint16_t full_every = 16;            // frames: every full_every-th frame is whole
+    // The lines a banded frame keeps: those within this angle of a band's side (the tracker's
+    // gate is 8°); the others cross a band and are background edges it cuts short.
+    angle_t line_angle = angle_from_deg(10);
 };
 
 // TrackingModeParams' units and accepted ranges (base/setting_range.h).
@@ -35,6 +38,7 @@ struct TrackingModeRanges {
     SettingRange half_width{"px", 2, 64};
     SettingRange reach{"px", 0, 64};
     SettingRange full_every{"frames", 2, 65535};
+    SettingRange line_angle{"degrees", 1, 45};
 };
 inline constexpr TrackingModeRanges kTrackingModeRanges{};
 

@@ -4,6 +4,7 @@
 // pixels the bands reach, from camera rows and from gradient rows.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,7 @@ BandWindow square_window(int half_width, int reach) {
     const q16_16 y[4] = {q16_16::from_int(50), q16_16::from_int(150), q16_16::from_int(150),
                          q16_16::from_int(50)};
     BandWindow w;
-    w.set_quad(x, y, q16_16::from_int(half_width), q16_16::from_int(reach));
+    w.set_quad(x, y, q16_16::from_int(half_width), q16_16::from_int(reach), angle_from_deg(10));
     return w;
 }
 
@@ -102,6 +103,26 @@ TEST_CASE("BandWindow: the columns its bands reach, worked by hand on a square",
     CHECK(last == 154);
 }
 
+TEST_CASE("BandWindow: the lines along a side, worked by hand on a square", "[bands]") {
+    const BandWindow w = square_window(4, 2);  // lines within 10 degrees of a side
+    auto line = [](double x1, double y1, double x2, double y2) {
+        Segment s{};
+        s.x1 = q16_16::from_raw(std::llround(x1 * 65536));
+        s.y1 = q16_16::from_raw(std::llround(y1 * 65536));
+        s.x2 = q16_16::from_raw(std::llround(x2 * 65536));
+        s.y2 = q16_16::from_raw(std::llround(y2 * 65536));
+        return s;
+    };
+    CHECK(w.along_a_side(line(101, 60, 101, 140)));   // on the left side
+    CHECK(w.along_a_side(line(150, 153, 110, 153)));  // 3 px below the bottom side, reversed
+    // Turned 9 degrees (tan 9° = 0.158: 12.7 px over 80) and 10.5 degrees about its midpoint.
+    CHECK(w.along_a_side(line(100 - 6.34, 60, 100 + 6.34, 140)));
+    CHECK_FALSE(w.along_a_side(line(100 - 7.41, 60, 100 + 7.41, 140)));
+    CHECK_FALSE(w.along_a_side(line(95, 100, 106, 100)));  // across the left band
+    CHECK_FALSE(w.along_a_side(line(107, 60, 107, 140)));  // parallel, 7 px in: beyond 4 + 2
+    CHECK(w.along_a_side(line(105.5, 60, 105.5, 140)));    // 5.5 px in: within 4 + 2
+}
+
 TEST_CASE("A window gives the full frame's edges wherever its bands reach, and none elsewhere",
           "[bands]") {
     int scenes = 0;
@@ -118,7 +139,7 @@ TEST_CASE("A window gives the full frame's edges wherever its bands reach, and n
             y[i] = q16_16::from_raw(std::llround((s.corners[i].y - 2.0) * 65536.0));
         }
         BandWindow window;
-        window.set_quad(x, y, q16_16::from_int(12), q16_16::from_int(6));
+        window.set_quad(x, y, q16_16::from_int(12), q16_16::from_int(6), angle_from_deg(10));
         for (const bool gradient_rows : {false, true}) {
             INFO("scene " << k << (gradient_rows ? ", gradient rows" : ", camera rows"));
             const std::vector<edge_point> full = edges_of(s.image, nullptr, gradient_rows);
