@@ -43,15 +43,20 @@ void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_widt
         px_[b][1] = ex + wx, py_[b][1] = ey + wy;
         px_[b][2] = ex - wx, py_[b][2] = ey - wy;
         px_[b][3] = sx - wx, py_[b][3] = sy - wy;
-        ymin_[b] = INT32_MAX;
-        ymax_[b] = INT32_MIN;
+        xmin_[b] = ymin_[b] = INT32_MAX;
+        xmax_[b] = ymax_[b] = INT32_MIN;
         for (int v = 0; v < 4; ++v) {
-            const int32_t y0 = py_[b][v], y1 = py_[b][(v + 1) & 3];
-            const int64_t run = int64_t{px_[b][(v + 1) & 3]} - px_[b][v];
-            slope_q16_[b][v] = y1 == y0 ? 0 : static_cast<int32_t>(run * 65536 / (y1 - y0));
-            ymin_[b] = y0 < ymin_[b] ? y0 : ymin_[b];
-            ymax_[b] = y0 > ymax_[b] ? y0 : ymax_[b];
+            xmin_[b] = px_[b][v] < xmin_[b] ? px_[b][v] : xmin_[b];
+            xmax_[b] = px_[b][v] > xmax_[b] ? px_[b][v] : xmax_[b];
+            ymin_[b] = py_[b][v] < ymin_[b] ? py_[b][v] : ymin_[b];
+            ymax_[b] = py_[b][v] > ymax_[b] ? py_[b][v] : ymax_[b];
         }
+        along_row_[b] = uy == 0;
+        const int64_t auy = uy < 0 ? -uy : uy;
+        slope_q16_[b] = uy == 0 ? 0 : static_cast<int32_t>(ux * 65536 / uy);
+        // Across a row the band is 2·hw/|uy| wide, plus the 1/16 px widening and a 1/16 px
+        // for the rounding of the slope and of this quotient.
+        half_x_[b] = uy == 0 ? 0 : static_cast<int32_t>((int64_t{hw} + 1) * 16384 / auy) + 2;
     }
     active_ = true;
 }
@@ -64,26 +69,18 @@ uint8_t BandWindow::spans(int32_t first, int32_t last, int32_t grow, uint16_t wi
     uint8_t n = 0;
     for (int b = 0; b < 4; ++b) {
         if (hi < ymin_[b] || lo > ymax_[b]) continue;
-        int32_t xmin = INT32_MAX, xmax = INT32_MIN;
-        auto take = [&](int32_t xv) {
-            xmin = xv < xmin ? xv : xmin;
-            xmax = xv > xmax ? xv : xmax;
-        };
-        for (int v = 0; v < 4; ++v) {
-            const int32_t x0 = px_[b][v], y0 = py_[b][v], y1 = py_[b][(v + 1) & 3];
-            if (y0 >= lo && y0 <= hi) take(x0);
-            if (y0 == y1) continue;
-            const int32_t ylo = y0 < y1 ? y0 : y1, yhi = y0 < y1 ? y1 : y0;
-            const int32_t slab[2] = {lo, hi};
-            for (const int32_t yl : slab) {
-                if (yl < ylo || yl > yhi) continue;
-                // The edge's crossing with y = yl, within a 1/16 px of the product's floor (the
-                // slope was rounded): both neighbours taken, so the span only grows.
-                const int32_t xf = x0 + static_cast<int32_t>(floor_div(
-                                            int64_t{slope_q16_[b][v]} * (yl - y0), 65536));
-                take(xf - 1);
-                take(xf + 1);
-            }
+        // The band's columns over the slab: the side's x at its two edges, widened by the
+        // band's half extent across a row, within the rectangle's extent.
+        int32_t xmin = xmin_[b], xmax = xmax_[b];
+        if (!along_row_[b]) {
+            const int32_t xa = side_x_[b] + static_cast<int32_t>(floor_div(
+                                                int64_t{slope_q16_[b]} * (lo - side_y_[b]), 65536));
+            const int32_t xb = side_x_[b] + static_cast<int32_t>(floor_div(
+                                                int64_t{slope_q16_[b]} * (hi - side_y_[b]), 65536));
+            const int32_t left = (xa < xb ? xa : xb) - half_x_[b],
+                          right = (xa < xb ? xb : xa) + half_x_[b];
+            xmin = left > xmin ? left : xmin;
+            xmax = right < xmax ? right : xmax;
         }
         if (xmin > xmax) continue;
         // Pixel x's square [x - 1/2, x + 1/2] meets [xmin, xmax].

@@ -64,10 +64,14 @@ public:
 
 private:
     int32_t px_[4][4] = {}, py_[4][4] = {};  // band b's rectangle, vertices in order, 1/16 px
-    // Edge v of band b (vertex v to v + 1): dx/dy in Q16, 0 for a horizontal edge (set_quad
-    // divides once a frame, so that spans() only multiplies: a division of 64-bit values is a
-    // library call on a Cortex-M).
-    int32_t slope_q16_[4][4] = {};
+    // Band b row by row (set_quad divides once a frame, so that spans() only multiplies: a
+    // division of 64-bit values is a library call on a Cortex-M): the side's x at y, x0 +
+    // slope·(y − y0) (slope dx/dy in Q16), and the band's half extent across a row around it,
+    // half_width / |uy| (1/16 px); none for a side along a row (uy = 0), whose band takes its
+    // whole extent. The extents of its rectangle bound both.
+    int32_t slope_q16_[4] = {}, half_x_[4] = {};
+    bool along_row_[4] = {};
+    int32_t xmin_[4] = {}, xmax_[4] = {};
     int32_t ymin_[4] = {}, ymax_[4] = {};  // band b's rows, 1/16 px
     // Side b's start (1/16 px) and unit direction (Q14); the bands' half width (1/16 px) and
     // sin(max_angle) (Q14).
