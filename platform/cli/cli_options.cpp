@@ -442,6 +442,29 @@ const FlagTable<DetectOptions, Command>& detect_flags() {
                 track.max_predicted,
                 [](DetectOptions& o) -> uint8_t& { return o.track.max_predicted; },
                 "off: never for that reason")),
+            track_only(
+                {"tracking-mode", "on|off",
+                 "on: each frame after one that held the board with all four sides is "
+                 "processed only in bands around the sides (docs/tracking.md), every "
+                 "--full-every-th frame whole",
+                 [](DetectOptions o) { return std::string(o.track.mode.enabled ? "on" : "off"); },
+                 [](const std::string& t, DetectOptions& o, std::string& e) {
+                     if (t != "on" && t != "off") {
+                         e = "'" + t + "' is not on or off";
+                         return false;
+                     }
+                     o.track.mode.enabled = t == "on";
+                     return true;
+                 }}),
+            track_only(
+                decimal("band-width", "PX",
+                        "tracking mode: a band's half width either side of a side's line",
+                        kTrackingModeRanges.half_width,
+                        [](DetectOptions& o) -> q16_16& { return o.track.mode.half_width; })),
+            track_only(integer<uint16_t>(
+                "full-every", "N", "tracking mode: every N-th frame is whole",
+                kTrackingModeRanges.full_every,
+                [](DetectOptions& o) -> uint16_t& { return o.track.mode.full_every; })),
         },
         Command::detect,
         34};
@@ -449,6 +472,7 @@ const FlagTable<DetectOptions, Command>& detect_flags() {
 }
 
 TrackOptions::TrackOptions() {
+    mode.enabled = false;  // the command line's default: every frame whole
     const QuadTrackerParams d;
     model = d.lines.model;
     filters = d.lines.filters;

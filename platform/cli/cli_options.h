@@ -13,6 +13,7 @@
 #include "host/board_runner.h"
 #include "quads/board_detector.h"
 #include "tracking/line_tracker.h"
+#include "tracking/tracking_mode.h"
 
 namespace qt::cli {
 
@@ -26,6 +27,7 @@ struct TrackOptions {
     angle_t gate_angle = 0;  // defaults from QuadTrackerParams (see the constructor)
     q16_16 gate_distance = {};
     uint8_t max_predicted = 0;
+    TrackingModeParams mode;  // tracking mode's bands; mode.enabled false: every frame whole
 
     TrackOptions();
 };

@@ -23,8 +23,8 @@ std::string detect_usage() {
 }
 
 bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, uint8_t bin,
-                  host::DetectResult& result, std::string& error) {
-    if (!host::detect_board(frame, options.params, result, bin, options.capacity)) {
+                  host::DetectResult& result, std::string& error, BandWindow* window) {
+    if (!host::detect_board(frame, options.params, result, bin, options.capacity, window)) {
         error = status_name(result.status);
         return false;
     }

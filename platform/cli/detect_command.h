@@ -13,8 +13,9 @@ namespace qt::cli {
 // (choose_bin()'s factor for this frame), the best options.max_quads quadrangles kept; the
 // result in the binned frame's pixels (to_input_pixels() maps it back). On failure returns false
 // with a one-line reason (no command prefix) in `error`.
+// window: tracking mode's bands (track), or null.
 bool detect_frame(const io::GreyImage& frame, const DetectOptions& options, uint8_t bin,
-                  host::DetectResult& result, std::string& error);
+                  host::DetectResult& result, std::string& error, BandWindow* window = nullptr);
 
 // args: everything after "detect". Writes the JSON (one line) to `out`, one error line to
 // `err`. Returns the exit status: 0 ok, 1 bad input file or frame, 2 bad command line.

@@ -53,6 +53,8 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
 
     const std::string name = io::input_name(spec);
     QuadTracker tracker;
+    TrackingMode mode(options.track.mode);
+    BandWindow* window = nullptr;  // this frame's bands (tracking mode), or null: whole
     uint8_t bin = 1;
     return host::for_each_frame(spec, "track", err, [&](int k, const io::GreyImage& frame) {
         std::string error;
@@ -69,7 +71,7 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
                                               static_cast<uint16_t>(frame.height / bin)));
         }
         host::DetectResult result;
-        if (!detect_frame(frame, options, bin, result, error)) {
+        if (!detect_frame(frame, options, bin, result, error, window)) {
             qt::io::print_error_line(err, "quadtrack track: %s: frame %d: %s", name.c_str(), k,
                                      error.c_str());
             return 1;
@@ -78,6 +80,7 @@ int run_track(const std::vector<std::string>& args, std::FILE* out, std::FILE* e
             tracker.step(result.lines.data(), static_cast<uint16_t>(result.lines.size()),
                          result.quads.data(), static_cast<uint16_t>(result.quads.size()));
         const q16_16 score = host::evidence_share(t, options.params.refine, options.capacity);
+        window = mode.plan(t);  // in the binned frame's pixels, before they become the input's
         host::to_input_pixels(result, frame.width, frame.height);
         host::to_input_pixels(t, bin);
         const std::string line =

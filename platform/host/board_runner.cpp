@@ -21,15 +21,15 @@ namespace {
 // bin factor are set).
 template <class Detector>
 bool run_chain(Detector& det, const io::GreyImage& frame, const BoardParams& params,
-               DetectResult& result) {
+               DetectResult& result, BandWindow* window) {
     static BinningStage<kMaxFrameWidth> binning;  // 1.9 KB
     const uint8_t bin = result.bin;
     const uint16_t w = result.width, h = result.height;
     Status s;
-    if (bin == 1) {
+    if (bin == 1 && window == nullptr) {
         s = io::push_frame(det, frame, params);
     } else {
-        s = det.begin_frame(w, h, params);
+        s = det.begin_frame(w, h, params, window);
         if (s == Status::previous_frame_incomplete) s = Status::ok;
         if (s == Status::ok)
             s = io::push_binned_rows(binning, frame, bin, [&](const uint8_t* row, uint16_t n) {
@@ -76,7 +76,7 @@ q16_16 evidence_share(const TrackedQuad& quad, const RefineParams& params,
 }
 
 bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
-                  uint8_t bin, DetectorCapacity capacity) {
+                  uint8_t bin, DetectorCapacity capacity, BandWindow* window) {
     HostBoardDetector& vga = vga_detector;
     BoardDetectorQvga& qvga = qvga_detector;
     result = DetectResult{};
@@ -89,8 +89,8 @@ bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectR
         result.status = Status::bad_size;
         return false;
     }
-    return capacity == DetectorCapacity::qvga ? run_chain(qvga, frame, params, result)
-                                              : run_chain(vga, frame, params, result);
+    return capacity == DetectorCapacity::qvga ? run_chain(qvga, frame, params, result, window)
+                                              : run_chain(vga, frame, params, result, window);
 }
 
 uint8_t choose_bin(int width, int height, uint8_t requested, std::string& error,

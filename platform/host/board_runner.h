@@ -40,8 +40,10 @@ struct DetectResult {
 // back). Returns false (with result.status saying why) on an error status, bad_size when the
 // binned frame is empty or larger than the capacity's frame; capacity_exceeded still returns
 // true with the results found.
+// window: tracking mode's bands for this frame (in the binned frame's pixels), or null.
 bool detect_board(const io::GreyImage& frame, const BoardParams& params, DetectResult& result,
-                  uint8_t bin = 1, DetectorCapacity capacity = DetectorCapacity::vga);
+                  uint8_t bin = 1, DetectorCapacity capacity = DetectorCapacity::vga,
+                  BandWindow* window = nullptr);
 
 // The share of a tracked board's perimeter with edge evidence of each side's polarity in the
 // last frame detect_board ran with `capacity` (its edge list; the board in that frame's binned

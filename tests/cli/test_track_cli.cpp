@@ -84,7 +84,8 @@ TEST_CASE("track carries the board through frames where its top and bottom sides
     const int truth_of[4] = {0, 3, 2, 1};
     for (const std::vector<std::string>& model :
          {std::vector<std::string>{}, std::vector<std::string>{"--model", "turn"},
-          std::vector<std::string>{"--model=paper", "--filters", "2"}}) {
+          std::vector<std::string>{"--model=paper", "--filters", "2"},
+          std::vector<std::string>{"--tracking-mode", "on", "--band-width", "10"}}) {
         std::vector<std::string> args = {pattern};
         args.insert(args.end(), model.begin(), model.end());
         const Run r = track(args);
