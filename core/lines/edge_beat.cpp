@@ -3,8 +3,9 @@
 namespace qt {
 
 void EdgeBeatFeed::begin_frame(EdgeList& list, uint16_t width, uint16_t height,
-                               uint16_t edge_threshold) {
+                               uint16_t edge_threshold, BandWindow* window) {
     list_ = &list;
+    window_ = window;
     width_ = width;
     height_ = height;
     threshold_ = edge_threshold;
@@ -13,6 +14,15 @@ void EdgeBeatFeed::begin_frame(EdgeList& list, uint16_t width, uint16_t height,
     list_row_ = -1;
     done_ = false;
     failed_ = false;
+}
+
+bool EdgeBeatFeed::in_bands(int32_t x, int32_t y) {
+    if (window_ == nullptr) return true;
+    const ColumnSpan* spans = nullptr;
+    const uint8_t n = window_->row(y, &spans);
+    for (uint8_t i = 0; i < n; ++i)
+        if (x >= spans[i].begin && x < spans[i].end) return true;
+    return false;
 }
 
 Status EdgeBeatFeed::push(const uint8_t* beats, uint32_t count, uint32_t* used) {
@@ -44,7 +54,7 @@ Status EdgeBeatFeed::push(const uint8_t* beats, uint32_t count, uint32_t* used) 
         }
         row_ = y;
         last_x_ = x;
-        if (eb::magnitude(b) < threshold_) continue;
+        if (eb::magnitude(b) < threshold_ || !in_bands(x, y)) continue;
         if (y != list_row_) list_->begin_row(static_cast<uint16_t>(y));
         list_row_ = y;
         list_->push(static_cast<uint16_t>(x), ep::dir(p), ep::delta16(p), eb::magnitude(b));

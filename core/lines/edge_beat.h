@@ -21,6 +21,7 @@
 #include <stdint.h>
 
 #include "base/status.h"
+#include "lines/band_window.h"
 #include "lines/edge_list.h"
 
 namespace qt {
@@ -86,7 +87,10 @@ inline void store(edge_beat b, uint8_t* beats, uint32_t i) {
 // format leaves 0.
 class EdgeBeatFeed {
 public:
-    void begin_frame(EdgeList& list, uint16_t width, uint16_t height, uint16_t edge_threshold);
+    // window: tracking mode's bands (band_window.h): the points outside them are checked and
+    // passed over, as the rows stage does not compute them; null: every point.
+    void begin_frame(EdgeList& list, uint16_t width, uint16_t height, uint16_t edge_threshold,
+                     BandWindow* window = nullptr);
     // Takes beats in stream order up to and including the frame's trailer; *used: how many
     // (the rest belong to the next frame). ok while the frame is open and once it is complete.
     Status push(const uint8_t* beats, uint32_t count, uint32_t* used);
@@ -94,7 +98,10 @@ public:
     bool done() const { return done_; }
 
 private:
+    bool in_bands(int32_t x, int32_t y);  // (x, y) in the window's bands (always, without one)
+
     EdgeList* list_ = nullptr;
+    BandWindow* window_ = nullptr;
     uint16_t width_ = 0, height_ = 0, threshold_ = 0;
     int32_t last_x_ = -1, row_ = -1;  // the previous point's column and row (-1: none yet)
     int32_t list_row_ = -1;           // the row begun last in the list

@@ -88,8 +88,8 @@ public:
     // (the new frame has started all the same).
     // window (tracking mode, band_window.h): when active, the frame's edges are sought only in
     // its bands, from camera rows (threshold_nms; canny takes the whole frame: its hysteresis
-    // joins edges through pixels outside the bands) or gradient rows; it must stay unchanged
-    // until the frame's last row.
+    // joins edges through pixels outside the bands), gradient rows or edge beats (those outside
+    // are passed over); it must stay unchanged until the frame's last row or beat.
     Status begin_frame(uint16_t width, uint16_t height, const LineParams& params,
                        BandWindow* window = nullptr) {
         params_ = params;
@@ -171,7 +171,7 @@ public:
         if (!beats_) {
             if (rows_seen_) return Status::not_in_frame;
             beats_ = true;
-            feed_.begin_frame(edges_view_, width_, height_, params_.edge_threshold);
+            feed_.begin_frame(edges_view_, width_, height_, params_.edge_threshold, window_);
         }
         const Status s = feed_.push(beats, count, used);
         if (s != Status::ok) {
@@ -276,8 +276,8 @@ private:
     SmoothRows<MaxWidth> smooth_;                     // canny: pixels -> smoothed pixels
     GradientStage<MaxWidth, NmsRowKernel> gradient_;  // pixels -> packed NMS rows, no words
     EdgeStage<MaxWidth> edge_stage_;
-    const BandWindow* window_ = nullptr;  // this frame's bands, or null
-    EdgeBeatFeed feed_;  // the frame's edges from the FPGA's beats (push_edge_beats)
+    BandWindow* window_ = nullptr;  // this frame's bands, or null
+    EdgeBeatFeed feed_;             // the frame's edges from the FPGA's beats (push_edge_beats)
     EdgeListStorage<EdgeCapacity, MaxHeight> edges_;
     EdgeList edges_view_ = edges_.view();
     HoughStorage<HoughBins, MaxThetaBins> hough_;

@@ -24,7 +24,7 @@ KINDS = [("board_motion_qvga_", "board"), ("clutter_qvga_", "clutter"),
          ("photos_qvga_", "real photograph"), ("photoseq", "real-photograph sequence"),
          ("stress_qvga_", "stress (noise, strokes)")]
 FRAME_RE = {head: re.compile(r"^%s (\S+)((?: \w+=\d+)+)$" % head)
-            for head in ("budget", "fpga", "bands")}
+            for head in ("budget", "fpga", "bands", "bands-fpga")}
 
 
 def frames_of(path, head="budget"):
@@ -170,26 +170,30 @@ def main():
           "<= 800 000, worst <= 2 400 000):")
     print()
     rows, verdicts = [], []
-    for part, kind, mine in chain_cases(args.chain, "bands"):
-        if kind not in ("board", "real-photograph sequence"):
-            continue
-        banded = [f for f in mine if f[1].get("banded") == 1]
-        for label, frames in (("in bands", banded), ("every frame", mine)):
-            if not frames:
+    for head, source in (("bands", "camera rows"), ("bands-fpga", "FPGA beats")):
+        for part, kind, mine in chain_cases(args.chain, head):
+            if kind not in ("board", "real-photograph sequence"):
                 continue
-            stages, med, worst, wf = summary(frames)
-            rows.append([part, kind, label, len(frames), "median"] + [med[s] for s in stages] +
-                        [med["total"], ""])
-            rows.append([part, kind, label, len(frames), "worst"] + [worst[s] for s in stages] +
-                        [worst["total"], "%d (%s)" % (wf[1]["total"], wf[0])])
-            if kind == "real-photograph sequence":
-                totals = sorted(f[1]["total"] for f in frames)
-                m, w = totals[len(totals) // 2], totals[-1]
-                verdicts.append("%s, %s, %s: median %d (%s), worst %d (%s)" % (
-                    part, kind, label, m, "met" if m <= 800000 else "NOT met", w,
-                    "met" if w <= 2400000 else "NOT met"))
-    table(["part", "kind of frame", "frames", "count", "statistic"] + stages +
-          ["total", "worst frame"], rows)
+            banded = [f for f in mine if f[1].get("banded") == 1]
+            for label, frames in (("in bands", banded), ("every frame", mine)):
+                if not frames:
+                    continue
+                stages, med, worst, wf = summary(frames)
+                # The first stage is rows or beats: one column for both.
+                first = stages[0]
+                rows.append([part, source, kind, label, len(frames), "median", med[first]] +
+                            [med[s] for s in stages[1:]] + [med["total"], ""])
+                rows.append([part, source, kind, label, len(frames), "worst", worst[first]] +
+                            [worst[s] for s in stages[1:]] +
+                            [worst["total"], "%d (%s)" % (wf[1]["total"], wf[0])])
+                if kind == "real-photograph sequence":
+                    totals = sorted(f[1]["total"] for f in frames)
+                    m, w = totals[len(totals) // 2], totals[-1]
+                    verdicts.append("%s, %s, %s, %s: median %d (%s), worst %d (%s)" % (
+                        part, source, kind, label, m, "met" if m <= 800000 else "NOT met", w,
+                        "met" if w <= 2400000 else "NOT met"))
+    table(["part", "edges from", "kind of frame", "frames", "count", "statistic",
+           "rows or beats"] + stages[1:] + ["total", "worst frame"], rows)
     for v in verdicts:
         print(v)
     print()

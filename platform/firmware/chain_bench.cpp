@@ -27,6 +27,8 @@
 // printed between "=== chain NAME-bands" and "=== end NAME-bands" lines, which the ctest
 // compares with the host's NAME-bands.chain.txt; "bands" lines give its instructions per frame
 // and stage (track includes the planning; banded=1: the frame ran in bands), median and worst.
+// Then tracking mode with edges from the FPGA ("bands-fpga" lines): each frame's text must equal
+// the camera rows' in tracking mode.
 //
 // Instructions come from SysTick ticks, 40 instructions each under -icount shift=0
 // (cycle_counter.h); a reading is quantised to 40 and includes one ticks_now() call. Stages:
@@ -96,9 +98,10 @@ enum Stage : unsigned { kRows, kHough, kCluster, kQuads, kTrack, kStages };
 constexpr const char* kStageNames[kStages] = {"rows", "hough", "cluster", "quads", "track"};
 constexpr const char* kFpgaStageNames[kStages] = {"beats", "hough", "cluster", "quads", "track"};
 
-// Where a frame's edges come from: the camera rows (whole, or in tracking mode's bands) or the
-// FPGA's edge beats.
-enum class Input { camera_rows, fpga_beats, bands };
+// Where a frame's edges come from: the camera rows or the FPGA's edge beats, whole or in
+// tracking mode's bands.
+enum class Input { camera_rows, fpga_beats, bands, fpga_bands };
+constexpr bool from_fpga(Input i) { return i == Input::fpga_beats || i == Input::fpga_bands; }
 
 // What the stages worked on, for reading the instruction counts.
 enum Work : unsigned {
@@ -132,11 +135,14 @@ void print_field(const char* name, uint64_t value) {
 }
 
 // "budget <prefix><name> rows=... total=..." ("fpga <prefix><name> beats=... total=..." for
-// the frames with edges from the FPGA, "bands ..." for tracking mode's).
+// the frames with edges from the FPGA, "bands ..." and "bands-fpga ..." for tracking mode's).
 void print_instructions(const char* prefix, const char* name, const Instructions& n,
                         Input input = Input::camera_rows, int banded = -1) {
-    const bool fpga = input == Input::fpga_beats;
-    sh_write(fpga ? "fpga " : input == Input::bands ? "bands " : "budget ");
+    const bool fpga = from_fpga(input);
+    sh_write(input == Input::fpga_beats   ? "fpga "
+             : input == Input::bands      ? "bands "
+             : input == Input::fpga_bands ? "bands-fpga "
+                                          : "budget ");
     sh_write(prefix);
     sh_write(name);
     for (unsigned s = 0; s < kStages; ++s)
@@ -170,7 +176,7 @@ const char* run_frame(const ChainFrame& frame, Input input, qt::BandWindow* wind
     if (s != qt::Status::ok) return qt::status_name(s);
     frame_open = true;
 
-    if (input != Input::fpga_beats) {
+    if (!from_fpga(input)) {
         n.stage[kRows] = push_camera_rows(pgm, g_line, s, [](const uint8_t* line, uint16_t w) {
             return g_det.push_row(line, w);
         });
@@ -207,7 +213,7 @@ const char* run_frame(const ChainFrame& frame, Input input, qt::BandWindow* wind
     text_hash = kFnvBasis;
     qt::write_frame_text(frame.name, g_det, status, track, g_tracker.stats().lost_reason,
                          [&](const char* text, size_t length) {
-                             if (input != Input::fpga_beats) sh_write(text);
+                             if (!from_fpga(input)) sh_write(text);
                              text_hash = fnv1a(text_hash, text, length);
                          });
     const qt::LineStats& ls = g_det.lines().stats();
@@ -347,13 +353,15 @@ unsigned fpga_pass(Instructions* per_frame, const uint64_t (*text_hash)[kMaxCase
     return failures;
 }
 
-// The camera rows again in tracking mode: each case with a new tracker and tracking mode (track
-// ids from 1 in every case, as the host's chain_texts() in tracking mode), each frame after the
-// first through the window planned from the frame before; texts printed as NAME-bands. Returns
-// the frames that failed; *worst_total gets the worst frame's instructions, *banded the frames
-// that ran in bands and *frames all of them.
-unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_total,
-                    unsigned* banded, unsigned* frames) {
+// Tracking mode: each case with a new tracker and tracking mode (track ids from 1 in every case,
+// as the host's chain_texts() in tracking mode), each frame after the first through the window
+// planned from the frame before. Input::bands: the camera rows, texts printed as NAME-bands and
+// hashed into text_hash; Input::fpga_bands: the edge beats, each frame's text equal to
+// text_hash's or the frame fails. Returns the frames that failed; *worst_total gets the worst
+// frame's instructions, *banded the frames that ran in bands and *frames all of them.
+unsigned bands_pass(Input input, Instructions* per_frame, uint64_t (*text_hash)[kMaxCaseFrames],
+                    bool& frame_open, uint64_t* worst_total, unsigned* banded, unsigned* frames) {
+    const bool fpga = input == Input::fpga_bands;
     unsigned failures = 0;
     start_tracker();
     for (unsigned c = 0; c < kCases; ++c) {
@@ -363,9 +371,11 @@ unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_t
         qt::BandWindow* window = nullptr;
         Instructions bands_worst;
         bool in_bands[kMaxCaseFrames] = {};
-        sh_write("=== chain ");
-        sh_write(chain.name);
-        sh_write("-bands\n");
+        if (!fpga) {
+            sh_write("=== chain ");
+            sh_write(chain.name);
+            sh_write("-bands\n");
+        }
         for (unsigned f = 0; f < chain.count; ++f) {
             per_frame[f] = Instructions{};
             uint64_t hash = 0;
@@ -373,28 +383,32 @@ unsigned bands_pass(Instructions* per_frame, bool& frame_open, uint64_t* worst_t
             in_bands[f] = window != nullptr;
             *banded += in_bands[f];
             ++*frames;
-            const char* error = run_frame(chain.frames[f], Input::bands, window, frame_open,
-                                          per_frame[f], hash, track);
+            const char* error =
+                run_frame(chain.frames[f], input, window, frame_open, per_frame[f], hash, track);
             const uint64_t t = ticks_now();
             window = g_mode.plan(track);
             per_frame[f].stage[kTrack] += ticks_to_instructions(ticks_now() - t);
+            if (error == nullptr && fpga && hash != text_hash[c][f])
+                error = "result text differs from the camera rows' in tracking mode";
+            if (!fpga) text_hash[c][f] = hash;
             if (error != nullptr) {
                 ++failures;
-                print_failure("bands ", chain.frames[f].name, error);
+                print_failure(fpga ? "bands-fpga " : "bands ", chain.frames[f].name, error);
             }
         }
-        sh_write("=== end ");
-        sh_write(chain.name);
-        sh_write("-bands\n");
+        if (!fpga) {
+            sh_write("=== end ");
+            sh_write(chain.name);
+            sh_write("-bands\n");
+        }
         for (unsigned f = 0; f < chain.count; ++f) {
-            print_instructions("", chain.frames[f].name, per_frame[f], Input::bands, in_bands[f]);
+            print_instructions("", chain.frames[f].name, per_frame[f], input, in_bands[f]);
             keep_worst(bands_worst, per_frame[f]);
             if (per_frame[f].total() > *worst_total) *worst_total = per_frame[f].total();
         }
         if (chain.count > 1)
-            print_instructions("median ", chain.name, median_of(per_frame, chain.count),
-                               Input::bands);
-        print_instructions("worst ", chain.name, bands_worst, Input::bands);
+            print_instructions("median ", chain.name, median_of(per_frame, chain.count), input);
+        print_instructions("worst ", chain.name, bands_worst, input);
     }
     return failures;
 }
@@ -447,7 +461,8 @@ int main() {
     failures += fpga_pass(per_frame, text_hash, frame_open);
     uint64_t bands_worst = 0;
     unsigned banded = 0, frames = 0;
-    failures += bands_pass(per_frame, frame_open, &bands_worst, &banded, &frames);
+    failures +=
+        bands_pass(Input::bands, per_frame, text_hash, frame_open, &bands_worst, &banded, &frames);
     sh_write("bands: ");
     sh_dec(banded);
     sh_write(" of ");
@@ -455,6 +470,18 @@ int main() {
     sh_write(" frames in bands; worst frame ");
     sh_dec(bands_worst);
     sh_write(" instructions\n");
+    uint64_t fpga_bands_worst = 0;
+    unsigned fpga_banded = 0, fpga_frames = 0;
+    const unsigned fpga_bands_failures =
+        bands_pass(Input::fpga_bands, per_frame, text_hash, frame_open, &fpga_bands_worst,
+                   &fpga_banded, &fpga_frames);
+    failures += fpga_bands_failures;
+    sh_write("bands-fpga: ");
+    sh_dec(fpga_frames - fpga_bands_failures);
+    sh_write(" of ");
+    sh_dec(fpga_frames);
+    sh_write(
+        " frames with edges from the FPGA in tracking mode give the camera rows' result text\n");
     report_budget(worst_total);
 
     // Painted words left at the bottom of the stack: fewer than this and the stack may have

@@ -1,7 +1,7 @@
 // Tracking mode's window (lines/band_window.h): its spans worked by hand on a square, and the
 // promise that a window changes nothing inside its bands: on boards composited onto real
 // photographs, the edges found through a window are exactly the full frame's edges of the
-// pixels the bands reach, from camera rows and from gradient rows.
+// pixels the bands reach, from camera rows, from gradient rows and from the FPGA's edge beats.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -11,6 +11,7 @@
 #include "gradient/gradient_stage.h"
 #include "io/image_io.h"
 #include "lines/band_window.h"
+#include "lines/edge_beat.h"
 #include "lines/line_detector.h"
 #include "scene/photo_board_scene.h"
 
@@ -41,6 +42,32 @@ using Spans = std::vector<std::pair<int, int>>;
 
 // The VGA build: its edge list (16 384 points) holds every edge of these QVGA frames.
 LineDetectorVga g_lines;
+
+// The frame's edges as the FPGA front end's beats (magnitude 255: above any threshold).
+std::vector<uint8_t> beats_of(const std::vector<edge_point>& points, int width, int height) {
+    std::vector<uint8_t> beats((points.size() + 1) * eb::kBytes);
+    uint32_t i = 0;
+    for (edge_point p : points)
+        eb::store(eb::point(ep::x(p), ep::y(p), ep::dir(p), ep::delta16(p), 255), beats.data(),
+                  i++);
+    eb::store(
+        eb::trailer(static_cast<uint32_t>(width - 1), static_cast<uint32_t>(height - 1), false),
+        beats.data(), i);
+    return beats;
+}
+
+// The edge points a window keeps of a frame's beats.
+std::vector<edge_point> edges_from_beats(const std::vector<uint8_t>& beats, BandWindow* window) {
+    REQUIRE(g_lines.begin_frame(320, 240, LineParams{}, window) == Status::ok);
+    uint32_t used = 0;
+    const uint32_t count = static_cast<uint32_t>(beats.size() / eb::kBytes);
+    REQUIRE(g_lines.push_edge_beats(beats.data(), count, &used) == Status::ok);
+    REQUIRE(used == count);
+    REQUIRE(g_lines.edge_beats_done());
+    std::vector<edge_point> points;
+    for (uint16_t i = 0; i < g_lines.edges().size(); ++i) points.push_back(g_lines.edges()[i]);
+    return points;
+}
 
 // The frame's edge points (raw words, states fresh), before PPHT consumes them.
 std::vector<edge_point> edges_of(const io::GreyImage& img, BandWindow* window, bool gradient_rows) {
@@ -159,6 +186,8 @@ TEST_CASE("A window gives the full frame's edges wherever its bands reach, and n
             // The bands hold the board's sides and leave out most of the frame.
             CHECK(expected.size() >= 200);
             CHECK(expected.size() < full.size());
+            // The same frame's edges as the FPGA's beats: those outside the bands passed over.
+            CHECK(edges_from_beats(beats_of(full, 320, 240), &window) == expected);
         }
         ++scenes;
     }
