@@ -18,6 +18,11 @@ void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_widt
                           angle_t max_angle) {
     const int32_t hw = to_sub(half_width), ext = to_sub(reach);
     half_width_ = hw;
+    fit_sides_ = false;
+    for (int i = 0; i < 4; ++i) {
+        corner_x_[i] = x[i];
+        corner_y_[i] = y[i];
+    }
     sin_max_q14_ = static_cast<int32_t>(sin_cos(max_angle).sin.raw >> 16);
     for (int b = 0; b < 4; ++b) {
         const int32_t ax = to_sub(x[b]), ay = to_sub(y[b]);
@@ -106,6 +111,11 @@ uint8_t BandWindow::spans(int32_t first, int32_t last, int32_t grow, uint16_t wi
         out[count++] = ColumnSpan{static_cast<uint16_t>(begin[i]), static_cast<uint16_t>(end[i])};
     }
     return count;
+}
+
+void BandWindow::set_sides(const int8_t* bright_right) {
+    fit_sides_ = bright_right != nullptr;
+    for (int i = 0; i < 4; ++i) bright_right_[i] = fit_sides_ ? bright_right[i] : 0;
 }
 
 bool BandWindow::along_a_side(const Segment& line) const {

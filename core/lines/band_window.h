@@ -34,6 +34,18 @@ public:
     void set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_width, q16_16 reach,
                   angle_t max_angle);
 
+    // Side fitting (tracking mode): the quadrangle's corners as given to set_quad and each
+    // side's contrast polarity, bright_right[i] +1 when the brighter side lies right of the
+    // direction from corner i to corner i + 1 as seen (y down), -1 left, 0 unknown; with it,
+    // the lines stage's caller measures each side by a fit to the edge points of its band
+    // (BoardDetector) instead of PPHT and the quadrangle search. null: no side fitting.
+    void set_sides(const int8_t* bright_right);
+    bool fits_sides() const { return fit_sides_; }
+    q16_16 corner_x(int i) const { return corner_x_[i]; }
+    q16_16 corner_y(int i) const { return corner_y_[i]; }
+    int8_t bright_right(int i) const { return bright_right_[i]; }
+    q16_16 half_width() const { return q16_16::from_raw(int64_t{half_width_} * 4096); }
+
     // Whether the line runs along one of the sides: within max_angle of its direction, with
     // its midpoint within half_width (and 2 px) of the side's line. In a banded frame a line
     // that crosses a band is a background edge the band cuts short, not a side.
@@ -77,6 +89,9 @@ private:
     // sin(max_angle) (Q14).
     int32_t side_x_[4] = {}, side_y_[4] = {}, side_ux_[4] = {}, side_uy_[4] = {};
     int32_t half_width_ = 0, sin_max_q14_ = 0;
+    q16_16 corner_x_[4] = {}, corner_y_[4] = {};
+    int8_t bright_right_[4] = {};
+    bool fit_sides_ = false;
     bool active_ = false;
     // The frame's rows: the last four rows' spans.
     struct Row {

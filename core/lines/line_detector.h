@@ -183,6 +183,18 @@ public:
     }
     bool edge_beats_done() const { return beats_ && feed_.done(); }
 
+    // After the last row, instead of finish(): closes the frame with its edges and no lines
+    // (tracking mode's side fitting measures the sides from the edges). not_in_frame as
+    // finish(); capacity_exceeded when edges were dropped.
+    Status finish_edges() {
+        if (!open_ || edge_stage_.in_frame() || edges_view_.height() != height_ || height_ == 0)
+            return Status::not_in_frame;
+        open_ = false;
+        stats_.edges = edges_view_.size();
+        stats_.edges_dropped = edges_view_.dropped();
+        return stats_.edges_dropped > 0 ? Status::capacity_exceeded : Status::ok;
+    }
+
     // After the last row: PPHT and clustering. not_in_frame if rows are missing, the frame was
     // abandoned or already finished; capacity_exceeded when edges, segments or clusters were
     // dropped or PPHT ran out of a work budget (walk steps, voters) (the lines found are valid;

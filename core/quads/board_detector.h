@@ -72,6 +72,8 @@ public:
     // The same, calling mark(stage) as each stage ends (line_detector.h's FinishStage).
     template <class Mark>
     Status finish(Mark&& mark) {
+        const BandWindow* bands = lines_.window();
+        if (bands != nullptr && bands->fits_sides()) return fit_sides(*bands, mark);
         const Status l = lines_.finish(mark);
         if (l != Status::ok && l != Status::capacity_exceeded) return l;
         // Tracking mode: only the lines along a band's side can be the board's sides; the
@@ -110,6 +112,67 @@ public:
     const QuadStats& quad_stats() const { return quad_stats_; }
 
 private:
+    // Tracking mode's side fitting: each predicted side refitted to the edge points of its band
+    // (refine_quad), the refitted sides the frame's lines, and the quadrangle they make kept
+    // when it passes the evidence checks and rule 3 (the checks of what the bands cannot see
+    // are not made).
+    template <class Mark>
+    Status fit_sides(const BandWindow& bands, Mark&& mark) {
+        const Status l = lines_.finish_edges();
+        if (l != Status::ok && l != Status::capacity_exceeded) return l;
+        mark(FinishStage::hough);
+        mark(FinishStage::cluster);
+        quad_count_ = 0;
+        Quad quad{};
+        Segment predicted[4];
+        for (int i = 0; i < 4; ++i) quad.corners[i] = Point16{bands.corner_x(i), bands.corner_y(i)};
+        const Segment* lines[4];
+        for (int i = 0; i < 4; ++i) {
+            const Point16 a = quad.corners[i], b = quad.corners[(i + 1) & 3];
+            predicted[i] = line_through(a, b);
+            // The polarity along the side, turned into the line's own: +1 when the brighter
+            // side lies on its +normal, the right of a -> b (as seen, y down) being (-dy, dx).
+            const SinCos n = sin_cos(predicted[i].theta);
+            const int64_t dot = (int64_t{n.cos.raw} * -(int64_t{b.y.raw} - a.y.raw) +
+                                 int64_t{n.sin.raw} * (int64_t{b.x.raw} - a.x.raw));
+            predicted[i].bright_side =
+                static_cast<int8_t>(dot >= 0 ? bands.bright_right(i) : -bands.bright_right(i));
+            quad.lines[i] = static_cast<uint8_t>(i);
+            lines[i] = &predicted[i];
+        }
+        // Refitted as detect's quadrangles are; a side the first pass does not find there (a
+        // prediction off by more than the refinement's band) is sought again across the whole
+        // band, only then: the wider first pass lets clutter near a side pull its fit.
+        RefineParams refine = params_.refine;
+        Segment sides[4];
+        SideEvidence evidence;
+        const Quad predicted_quad = quad;
+        uint8_t refitted = refine_quad(lines_.edges(), lines, refine, quad, sides, &evidence);
+        if (refitted != 0xFu && refine.band.raw < bands.half_width().raw) {
+            refine.band = bands.half_width();
+            quad = predicted_quad;
+            refitted = refine_quad(lines_.edges(), lines, refine, quad, sides, &evidence);
+        }
+        uint8_t index[4] = {};
+        for (int i = 0; i < 4; ++i)
+            if ((refitted >> i) & 1u) {
+                index[i] = static_cast<uint8_t>(lines_.line_count());
+                lines_.append_line(sides[i]);
+            }
+        q16_16 score = q16_16::from_int(0);
+        if (refitted == 0xFu && verify_evidence(evidence, 0, refine, &score) &&
+            rule_corners_inside(quad.corners, lines_.width(), lines_.height(), params_.quads)) {
+            for (int i = 0; i < 4; ++i) quad.lines[i] = index[i];
+            quad.score = score;
+            quads_[0] = quad;
+            for (int i = 0; i < 4; ++i) sides_[0][i] = sides[i];
+            quad_count_ = 1;
+        }
+        quad_stats_.quads = quad_count_;
+        mark(FinishStage::quads);
+        return l;
+    }
+
     // Candidate k (quad, as detect_quads ranked it) refined and checked as finish() keeps one:
     // edge evidence on its refitted sides (quad and sides then refined, quad.score the
     // evidence), rule 3 again for the refitted corners, no sides running on past its corners,

@@ -122,22 +122,6 @@ bool build_candidate(const Sides& sides, Quad& out, uint8_t order[4]) {
     return true;
 }
 
-// The side from p to q as a line (q16_16 pixels; p != q): its normal, rho and C, no points.
-Segment line_through(Point16 p, Point16 q) {
-    const int64_t ux = static_cast<int64_t>(q.x.raw) - p.x.raw,
-                  uy = static_cast<int64_t>(q.y.raw) - p.y.raw;
-    const int64_t len = distance(p, q).raw;
-    FittedLine l;
-    l.mx = q16_16::from_raw(static_cast<int32_t>((static_cast<int64_t>(p.x.raw) + q.x.raw) / 2));
-    l.my = q16_16::from_raw(static_cast<int32_t>((static_cast<int64_t>(p.y.raw) + q.y.raw) / 2));
-    int64_t dx = (ux * (int64_t{1} << 30)) / len, dy = (uy * (int64_t{1} << 30)) / len;
-    if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
-    l.dx = q2_30::from_raw(static_cast<int32_t>(dx));
-    l.dy = q2_30::from_raw(static_cast<int32_t>(dy));
-    const q16_16 half = q16_16::from_raw(static_cast<int32_t>(len / 2));
-    return make_segment(l, q16_16::from_raw(-half.raw), half, 0);
-}
-
 // The end of segment s farther from line l (normal n) and its distance, q16_16 raw.
 Point16 far_end(const Segment& s, const Segment& l, SinCos n, int64_t* d) {
     const int64_t d1 = signed_distance(l, n, s.x1.raw, s.y1.raw),
@@ -428,6 +412,21 @@ void complete_hidden_sides(const Segment* lines, uint16_t n, const QuadLine* geo
 }
 
 }  // namespace
+
+Segment line_through(Point16 p, Point16 q) {
+    const int64_t ux = static_cast<int64_t>(q.x.raw) - p.x.raw,
+                  uy = static_cast<int64_t>(q.y.raw) - p.y.raw;
+    const int64_t len = distance(p, q).raw;
+    FittedLine l;
+    l.mx = q16_16::from_raw(static_cast<int32_t>((static_cast<int64_t>(p.x.raw) + q.x.raw) / 2));
+    l.my = q16_16::from_raw(static_cast<int32_t>((static_cast<int64_t>(p.y.raw) + q.y.raw) / 2));
+    int64_t dx = (ux * (int64_t{1} << 30)) / len, dy = (uy * (int64_t{1} << 30)) / len;
+    if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
+    l.dx = q2_30::from_raw(static_cast<int32_t>(dx));
+    l.dy = q2_30::from_raw(static_cast<int32_t>(dy));
+    const q16_16 half = q16_16::from_raw(static_cast<int32_t>(len / 2));
+    return make_segment(l, q16_16::from_raw(-half.raw), half, 0);
+}
 
 Status detect_quads(const Segment* lines, uint16_t n, uint16_t width, uint16_t height,
                     const QuadParams& params, const QuadSearchMemory& memory, QuadStats* stats) {

@@ -84,6 +84,10 @@ struct QuadSearchMemory {
     Segment* completed = nullptr;  // `capacity` entries, or none: no side is completed
 };
 
+// The side from p to q as a line (q16_16 pixels; p != q): its normal, rho and C, no points
+// and no polarity (bright_side 0).
+Segment line_through(Point16 p, Point16 q);
+
 // Finds quadrangles among lines[0 .. n) (n <= 254) in a width × height frame. Writes the best
 // `capacity` distinct candidates (two whose corners all lie within collinear_distance of each other
 // are one quadrangle, reported once), highest score first (ties: larger perimeter first, then lower

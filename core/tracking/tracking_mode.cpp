@@ -25,6 +25,19 @@ BandWindow* TrackingMode::plan(const TrackedQuad& tracked) {
     ++banded_run_;
     ++stats_.banded;
     window_.set_quad(x, y, params_.half_width, params_.reach, params_.line_angle);
+    if (params_.fit_sides) {
+        // Each side's polarity along it (BandWindow::set_sides), from its line's.
+        int8_t bright_right[4];
+        for (int i = 0; i < 4; ++i) {
+            const Segment& s = tracked.sides[i];
+            const Point16 a = tracked.corners[i], b = tracked.corners[(i + 1) & 3];
+            const SinCos n = sin_cos(s.theta);
+            const int64_t dot = (int64_t{n.cos.raw} * -(int64_t{b.y.raw} - a.y.raw) +
+                                 int64_t{n.sin.raw} * (int64_t{b.x.raw} - a.x.raw));
+            bright_right[i] = static_cast<int8_t>(dot >= 0 ? s.bright_side : -s.bright_side);
+        }
+        window_.set_sides(bright_right);
+    }
     return &window_;
 }
 

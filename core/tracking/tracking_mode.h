@@ -31,6 +31,10 @@ struct TrackingModeParams {
     // The lines a banded frame keeps: those within this angle of a band's side (the tracker's
     // gate is 8°); the others cross a band and are background edges it cuts short.
     angle_t line_angle = angle_from_deg(10);
+    // Each side measured by a fit to the edge points of its band (refine_quad from the
+    // predicted side) instead of PPHT and the quadrangle search, which a banded frame then
+    // skips.
+    bool fit_sides = true;
 };
 
 // TrackingModeParams' units and accepted ranges (base/setting_range.h).
