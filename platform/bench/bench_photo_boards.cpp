@@ -32,6 +32,7 @@
 #include "quads/quad_interior.h"
 #include "scene/photo_board_scene.h"
 #include "tracking/quad_tracker.h"
+#include "tracking/tracking_mode.h"
 
 #ifdef QT_HAVE_OPENCV
 #include "bench/opencv_squares.h"
@@ -311,6 +312,68 @@ void print_row(const char* method, const char* size, const char* set, Tally& t, 
 std::string g_sequence_photo =
     "building";  // the sequence's background: the first photograph of that name
 
+// Tracking mode on the sequence: its tracked corners against the truth and against those of
+// the whole frames.
+struct TrackingModeTally {
+    int frames = 0, good = 0, occluded = 0, occluded_good = 0, banded = 0, both = 0;
+    double worst_rms = 0, sq_apart = 0;
+    void add(bool in_bands, const qt::TrackedQuad& whole, const qt::TrackedQuad& t,
+             const sc::PhotoBoardScene& s) {
+        ++frames;
+        banded += in_bands;
+        double rms = 1e9;
+        if (t.state != qt::TrackState::none) {
+            Corners tc{};
+            for (int i = 0; i < 4; ++i)
+                tc[i] = {t.corners[i].x.raw / 65536.0, t.corners[i].y.raw / 65536.0};
+            corner_error(tc, s.corners, &rms);
+            worst_rms = std::max(worst_rms, rms);
+        }
+        good += rms <= kHitPx;
+        if (s.occluded_side >= 0) {
+            ++occluded;
+            occluded_good += rms <= kHitPx;
+        }
+        if (t.state != qt::TrackState::none && whole.state != qt::TrackState::none) {
+            ++both;
+            for (int i = 0; i < 4; ++i) {
+                const double dx = (t.corners[i].x.raw - whole.corners[i].x.raw) / 65536.0,
+                             dy = (t.corners[i].y.raw - whole.corners[i].y.raw) / 65536.0;
+                sq_apart += (dx * dx + dy * dy) / 4;
+            }
+        }
+    }
+    std::string row(int w, int h, const std::string& photo, int count) const {
+        char line[256];
+        std::snprintf(
+            line, sizeof line,
+            "| %dx%d | %s | %d | %.1f %% (%d) | %.1f %% (%d of %d) | %d | %.3f | %.3f |\n", w, h,
+            photo.c_str(), count, 100.0 * good / count, good,
+            100.0 * occluded_good / std::max(1, occluded), occluded_good, occluded, banded,
+            worst_rms, both > 0 ? std::sqrt(sq_apart / both) : 0.0);
+        return line;
+    }
+};
+std::string g_tracking_mode_rows;
+
+// One frame through `det` in the window (null: whole) and `tracker`'s step on it.
+template <class Detector>
+qt::TrackedQuad banded_step(Detector& det, const qt::io::GreyImage& img,
+                            const qt::BoardParams& params, qt::BandWindow* window,
+                            qt::QuadTracker& tracker) {
+    const uint16_t w = static_cast<uint16_t>(img.width), h = static_cast<uint16_t>(img.height);
+    qt::Status s = det.begin_frame(w, h, params, window);
+    if (s == qt::Status::previous_frame_incomplete) s = qt::Status::ok;
+    for (uint16_t y = 0; y < h && s == qt::Status::ok; ++y) s = det.push_row(img.row(y), w);
+    if (s == qt::Status::ok) s = det.finish();
+    if (s != qt::Status::ok && s != qt::Status::capacity_exceeded) {
+        std::fprintf(stderr, "bench_photo_boards: %s\n", qt::status_name(s));
+        std::exit(1);
+    }
+    return tracker.step(det.lines().lines(), det.lines().line_count(), det.quads(),
+                        det.quad_count());
+}
+
 // The sequence: tracked frames within kHitPx RMS of the truth, overall and while the arm hides
 // a side.
 void run_sequence(const std::vector<Photo>& photos, int w, int h, const qt::BoardParams& params,
@@ -330,6 +393,12 @@ void run_sequence(const std::vector<Photo>& photos, int w, int h, const qt::Boar
     tracker.set_params(tp);
     int good = 0, occluded = 0, occluded_good = 0, detected_good = 0;
     double worst_rms = 0;
+    // The same frames in tracking mode (tracking/tracking_mode.h): a second tracker fed by the
+    // detector run through the bands planned from its own last frame.
+    qt::QuadTracker banded_tracker(tp);
+    qt::TrackingMode mode;
+    qt::BandWindow* window = nullptr;
+    TrackingModeTally tm;
     std::vector<int> misses;
     for (int k = 0; k < so.frames; ++k) {
         const sc::PhotoBoardScene s = sc::make_photo_sequence_frame(so, photo.image, k);
@@ -353,6 +422,11 @@ void run_sequence(const std::vector<Photo>& photos, int w, int h, const qt::Boar
             nq = g_vga.det.quad_count();
         }
         const qt::TrackedQuad t = tracker.step(lines, n, quads, nq);
+        const qt::TrackedQuad tb =
+            w <= 320 && h <= 240 ? banded_step(g_qvga.det, s.image, params, window, banded_tracker)
+                                 : banded_step(g_vga.det, s.image, params, window, banded_tracker);
+        tm.add(window != nullptr, t, tb, s);
+        window = mode.plan(tb);
         double rms = 1e9;
         Corners tc{};
         if (t.state != qt::TrackState::none) {
@@ -383,6 +457,7 @@ void run_sequence(const std::vector<Photo>& photos, int w, int h, const qt::Boar
         for (int k : misses) std::printf(" %d", k);
         std::printf("\n");
     }
+    g_tracking_mode_rows += tm.row(w, h, photo.name, so.frames);
 }
 
 }  // namespace
@@ -568,6 +643,13 @@ int main(int argc, char** argv) {
             "detected within %.0f px | worst RMS px |\n|---|---|---|---|---|---|---|---|\n",
             kHitPx, kHitPx);
         for (const Size& sz : sizes) run_sequence(photos, sz.w, sz.h, options.params, pictures);
+        std::printf(
+            "\nThe sequence in tracking mode (tracking/tracking_mode.h): each frame after one that "
+            "held the board with all four sides measured in bands around them\n| size | "
+            "photograph | frames | tracked within %.0f px RMS | while a side is hidden | frames in "
+            "bands | worst RMS px | RMS px from the whole frames' corners |\n"
+            "|---|---|---|---|---|---|---|---|\n%s",
+            kHitPx, g_tracking_mode_rows.c_str());
     }
     return 0;
 }
