@@ -25,6 +25,7 @@ void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_widt
     }
     sin_max_q14_ = static_cast<int32_t>(sin_cos(max_angle).sin.raw >> 16);
     for (int b = 0; b < 4; ++b) {
+        int32_t px[4], py[4];  // the band's rectangle, vertices in order, 1/16 px
         const int32_t ax = to_sub(x[b]), ay = to_sub(y[b]);
         const int32_t bx = to_sub(x[(b + 1) & 3]), by = to_sub(y[(b + 1) & 3]);
         const int64_t dx = bx - ax, dy = by - ay;
@@ -44,17 +45,17 @@ void BandWindow::set_quad(const q16_16 x[4], const q16_16 y[4], q16_16 half_widt
         // Rounding above moves a vertex by at most 1/16 px inwards: widen by that much.
         const int32_t wx = across_x + (across_x >= 0 ? 1 : -1),
                       wy = across_y + (across_y >= 0 ? 1 : -1);
-        px_[b][0] = sx + wx, py_[b][0] = sy + wy;
-        px_[b][1] = ex + wx, py_[b][1] = ey + wy;
-        px_[b][2] = ex - wx, py_[b][2] = ey - wy;
-        px_[b][3] = sx - wx, py_[b][3] = sy - wy;
+        px[0] = sx + wx, py[0] = sy + wy;
+        px[1] = ex + wx, py[1] = ey + wy;
+        px[2] = ex - wx, py[2] = ey - wy;
+        px[3] = sx - wx, py[3] = sy - wy;
         xmin_[b] = ymin_[b] = INT32_MAX;
         xmax_[b] = ymax_[b] = INT32_MIN;
         for (int v = 0; v < 4; ++v) {
-            xmin_[b] = px_[b][v] < xmin_[b] ? px_[b][v] : xmin_[b];
-            xmax_[b] = px_[b][v] > xmax_[b] ? px_[b][v] : xmax_[b];
-            ymin_[b] = py_[b][v] < ymin_[b] ? py_[b][v] : ymin_[b];
-            ymax_[b] = py_[b][v] > ymax_[b] ? py_[b][v] : ymax_[b];
+            xmin_[b] = px[v] < xmin_[b] ? px[v] : xmin_[b];
+            xmax_[b] = px[v] > xmax_[b] ? px[v] : xmax_[b];
+            ymin_[b] = py[v] < ymin_[b] ? py[v] : ymin_[b];
+            ymax_[b] = py[v] > ymax_[b] ? py[v] : ymax_[b];
         }
         along_row_[b] = uy == 0;
         const int64_t auy = uy < 0 ? -uy : uy;
@@ -133,19 +134,6 @@ bool BandWindow::along_a_side(const Segment& line) const {
         if ((off < 0 ? -off : off) <= (int64_t{half_width_} + 2 * kSub) * 16384) return true;
     }
     return false;
-}
-
-bool BandWindow::rows(uint16_t height, int32_t* first, int32_t* last) const {
-    int32_t ymin = INT32_MAX, ymax = INT32_MIN;
-    for (int b = 0; b < 4; ++b)
-        for (int v = 0; v < 4; ++v) {
-            ymin = py_[b][v] < ymin ? py_[b][v] : ymin;
-            ymax = py_[b][v] > ymax ? py_[b][v] : ymax;
-        }
-    const int64_t f = -floor_div(-(ymin - kSub / 2), kSub), l = floor_div(ymax + kSub / 2, kSub);
-    *first = static_cast<int32_t>(f < 0 ? 0 : f);
-    *last = static_cast<int32_t>(l >= height ? height - 1 : l);
-    return *first <= *last;
 }
 
 void BandWindow::begin_frame(uint16_t width, uint16_t height) {

@@ -60,10 +60,6 @@ public:
     uint8_t spans(int32_t first, int32_t last, int32_t grow, uint16_t width,
                   ColumnSpan out[kMaxSpans]) const;
 
-    // The rows first..last (inclusive, clipped to [0, height)) that a band reaches; false when
-    // none does.
-    bool rows(uint16_t height, int32_t* first, int32_t* last) const;
-
     // The lines stage's view, a frame at a time: row(y) gives row y's spans (computed once a
     // frame: the edge decisions of row y read them), grown(r) the columns where packed
     // gradient row r must hold what the full row would (the spans of rows r − 1 .. r + 1 grown
@@ -75,7 +71,6 @@ public:
     uint8_t grown(int32_t r, const ColumnSpan** spans);
 
 private:
-    int32_t px_[4][4] = {}, py_[4][4] = {};  // band b's rectangle, vertices in order, 1/16 px
     // Band b row by row (set_quad divides once a frame, so that spans() only multiplies: a
     // division of 64-bit values is a library call on a Cortex-M): the side's x at y, x0 +
     // slope·(y − y0) (slope dx/dy in Q16), and the band's half extent across a row around it,
