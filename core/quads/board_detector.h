@@ -155,7 +155,7 @@ private:
         }
         uint8_t index[4] = {};
         for (int i = 0; i < 4; ++i)
-            if ((refitted >> i) & 1u) {
+            if (((static_cast<uint32_t>(refitted) >> i) & 1u) != 0) {
                 index[i] = static_cast<uint8_t>(lines_.line_count());
                 lines_.append_line(sides[i]);
             }
