@@ -1,13 +1,12 @@
-// Clustering of duplicate segments (section 2.4 of quadrangle-3kf): one strong edge often
-// comes out of PPHT as several short segments. Two segments are similar when their closest
+// Clustering of duplicate segments (section 2.4 of the Quadrangle Detection paper): one strong edge
+// often comes out of PPHT as several short segments. Two segments are similar when their closest
 // points to the origin are near, S(li, lj) = |Ci − Cj| <= distance, as in the paper, AND their
-// orientations are near: two different lines through (or near) the origin both have C ≈ (0, 0)
-// and the paper's measure alone would merge them. Near the origin C moves little with the
-// angle (|ΔC| ≈ rho·Δθ), so two parallel-ish sides of neighbouring shapes can pass both tests:
-// the shorter segment's ends must also lie near the longer one's line. Each cluster is refitted
-// from all its
-// members (total least squares over their points, each member standing for its points spread
-// evenly along it), not represented by its longest member.
+// orientations are near: two different lines through (or near) the origin both have C ≈ (0, 0) and
+// the paper's measure alone would merge them. Near the origin C moves little with the angle (|ΔC| ≈
+// rho·Δθ), so two parallel-ish sides of neighbouring shapes can pass both tests: the shorter
+// segment's ends must also lie near the longer one's line. Each cluster is refitted from all its
+// members (total least squares over their points, each member standing for its points spread evenly
+// along it), not represented by its longest member.
 #pragma once
 #include <stdint.h>
 

@@ -23,7 +23,7 @@
 
 namespace qt {
 
-// The edge map's front end (quadrangle-3kf §2.3, Figure 3: a Canny edge map).
+// The edge map's front end (the Quadrangle Detection paper §2.3, Figure 3: a Canny edge map).
 enum class EdgeFrontEnd : uint8_t {
     // Ours (default): central differences of the raw rows, one threshold, NMS.
     threshold_nms,

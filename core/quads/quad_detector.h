@@ -1,9 +1,9 @@
-// Quadrangle detection (section 2.4 of quadrangle-3kf) among clustered lines, without trying
-// all N-choose-4 sets: lines are first paired with the lines almost parallel to them (rule 1)
-// and far enough apart (rule 4), then each parallel pair is combined with each later pair
-// almost perpendicular to it (rule 2). Each combination gives one candidate: its corners are
-// the four line intersections, checked against rules 3, 4 and 5 and against support (how much
-// of each side its line's segment covers).
+// Quadrangle detection (section 2.4 of the Quadrangle Detection paper) among clustered lines,
+// without trying all N-choose-4 sets: lines are first paired with the lines almost parallel to them
+// (rule 1) and far enough apart (rule 4), then each parallel pair is combined with each later pair
+// almost perpendicular to it (rule 2). Each combination gives one candidate: its corners are the
+// four line intersections, checked against rules 3, 4 and 5 and against support (how much of each
+// side its line's segment covers).
 //
 // Work: N·(N−1)/2 pair tests, then P·(P−1)/2 pair combinations for P parallel pairs. P is
 // small for real frames (a board gives 2, clutter a few), but grows as N²/4 in the worst case

@@ -1,5 +1,6 @@
-// The geometry of quadrangle candidates and the five rules of section 2.4 of quadrangle-3kf,
-// each a separate function so that each can be tested on hand-worked cases. Fixed point only.
+// The geometry of quadrangle candidates and the five rules of section 2.4 of the Quadrangle
+// Detection paper, each a separate function so that each can be tested on hand-worked cases. Fixed
+// point only.
 //
 // Conventions: pixels with the origin at the centre of pixel (0, 0), x right, y down.
 // A quadrangle's corners run ANTI-CLOCKWISE AS SEEN IN THE IMAGE, starting with the corner of

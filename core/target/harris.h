@@ -1,5 +1,5 @@
 // Harris corners from gradient words, streaming: the first step of the target tracker's
-// homography estimate (filtering-geometry paper, Table I, step 1). Works the same on words
+// homography estimate (the Filtering and Geometry paper, Table I, step 1). Works the same on words
 // from core's GradientStage or from the FPGA block (the word is the interface).
 //
 // Per pixel, the structure tensor M = Σ [gx², gx·gy; gx·gy, gy²] over the (2·WindowRadius+1)²

@@ -1,4 +1,4 @@
-// Table III step 2 as filtering-geometry.txt describes it: "detect target candidate from
+// Table III step 2 as the Filtering and Geometry paper describes it: "detect target candidate from
 // interest region ... by using morphological operation and clustering" (its reference [9]: a
 // top-hat filter and clustering of the detections). The alternative to the NCC template
 // (template_search.h) as the target tracker's measurement. Integer only.

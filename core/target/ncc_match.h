@@ -1,5 +1,5 @@
 // Zero-mean normalised cross-correlation of grey-level blocks in Q15, and matching of two
-// frames' Harris corners by the NCC of their patches (filtering-geometry paper, Table I,
+// frames' Harris corners by the NCC of their patches (the Filtering and Geometry paper, Table I,
 // step 2). Integer only.
 //
 // For n = w·h pixels with sums Sa = Σa, Sb = Σb, Saa = Σa², Sbb = Σb², Sab = Σab:

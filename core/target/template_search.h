@@ -1,7 +1,7 @@
-// Template matching for the target tracker's measurement (filtering-geometry.txt Fig. 3): the
-// target's template searched by zero-mean NCC (ncc_match.h) over the candidate centres of a
-// search window, inside a region of the current frame captured while its rows streamed by.
-// Integer only.
+// Template matching for the target tracker's measurement (the Filtering and Geometry paper Fig. 3):
+// the target's template searched by zero-mean NCC (ncc_match.h) over the candidate centres of a
+// search window, inside a region of the current frame captured while its rows streamed by. Integer
+// only.
 #pragma once
 #include <stdint.h>
 #include <string.h>

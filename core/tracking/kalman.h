@@ -1,4 +1,4 @@
-// The Kalman filter of the 3KF line tracker, in fixed point: quadrangle-3kf.txt §2.6,
+// The Kalman filter of the 3KF line tracker, in fixed point: the Quadrangle Detection paper §2.6,
 // equations (3)–(5). It tracks the closest point C = (x, y) of a line (pixels) with
 //
 //   X = [x, ẋ, y, ẏ]ᵀ (px, px/frame),  Z = [x, y]ᵀ (px),  Δt = 1 frame,

@@ -1,5 +1,5 @@
-// The line tracker: quadrangle-3kf §2.5–2.7 (the paper's multiple-model Kalman filter, "NKF")
-// and, selectable beside it, a turn model of our own design.
+// The line tracker: the Quadrangle Detection paper §2.5–2.7 (the paper's multiple-model Kalman
+// filter, "NKF") and, selectable beside it, a turn model of our own design.
 //
 // Lines are measured as Segments (rho >= 0, theta the normal's direction, pixels, y down) and
 // reported the same way, so the quadrangle rules and intersect_lines() take them directly.

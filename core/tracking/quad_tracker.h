@@ -1,8 +1,8 @@
-// The quadrangle tracker: quadrangle-3kf §2 "Real-time Quadrangle Tracking" and Experiment 3.
-// Four line trackers (line_tracker.h), one per side, carry a board found by detect_quads()
-// from frame to frame; a side the lines stage misses in a frame (the paper's frames 41–43,
-// where the top and bottom sides are not extracted) is predicted, and the quadrangle is still
-// rebuilt from the four lines.
+// The quadrangle tracker: the Quadrangle Detection paper §2 "Real-time Quadrangle Tracking" and
+// Experiment 3. Four line trackers (line_tracker.h), one per side, carry a board found by
+// detect_quads() from frame to frame; a side the lines stage misses in a frame (the paper's frames
+// 41–43, where the top and bottom sides are not extracted) is predicted, and the quadrangle is
+// still rebuilt from the four lines.
 //
 // Each frame (step()):
 //   1. No track: the best detected quadrangle, if any, starts one (every side "detected").

@@ -4,6 +4,7 @@
 // (written by `qt_vectors --direction-table FILE`). Exit status non-zero on any mismatch.
 
 `timescale 1ns/1ps
+`default_nettype none
 
 module tb_direction;
     localparam N = 511 * 511;           // (gx, gy) pairs
@@ -47,3 +48,5 @@ module tb_direction;
         $finish;
     end
 endmodule
+
+`default_nettype wire

@@ -16,6 +16,7 @@
 // on an output. The last line is "PASS n words, e edge beats".
 
 `timescale 1ns/1ps
+`default_nettype none
 `include "gradient_word.vh"
 `include "edge_beat.vh"
 
@@ -147,3 +148,5 @@ module tb_edge_stage;
         end
     end
 endmodule
+
+`default_nettype wire

@@ -42,6 +42,7 @@
 // a block had not emitted when a reset took it).
 
 `timescale 1ns/1ps
+`default_nettype none
 `include "gradient_word.vh"
 `include "edge_beat.vh"
 
@@ -550,3 +551,5 @@ module tb_front;
         end
     end
 endmodule
+
+`default_nettype wire

@@ -7,6 +7,7 @@
 // Exit status non-zero ($fatal) on any difference; the last line is "PASS".
 
 `timescale 1ns/1ps
+`default_nettype none
 
 module tb_limits;
     reg clk = 1'b0;
@@ -146,3 +147,5 @@ module tb_limits;
         $finish;
     end
 endmodule
+
+`default_nettype wire

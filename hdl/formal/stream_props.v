@@ -1,4 +1,5 @@
 `timescale 1ns / 1ps
+`default_nettype none
 
 // Stream rules of the gradient block's output, as properties for a bounded proof (yosys-smtbmc;
 // hdl/formal/run.sh). The input side is left free but for the AXI4-Stream source rule (a beat
@@ -139,3 +140,5 @@ module stream_props #(
     end
 `endif
 endmodule
+
+`default_nettype wire

@@ -504,8 +504,8 @@ int main(int argc, char** argv) {
     }
     std::printf("lines stage host benchmark (timings: medians on a noisy shared 2-core machine)\n");
     accuracy(scenes, qt::LineParams{}, "1. Accuracy, default LineParams (threshold + NMS)");
-    // The paper's Canny edge map (quadrangle-3kf §2.3), thresholds chosen for its smoothed
-    // gradient (a step's central difference is 3/4 of the raw one's): low 30, high 60.
+    // The paper's Canny edge map (the Quadrangle Detection paper §2.3), thresholds chosen for its
+    // smoothed gradient (a step's central difference is 3/4 of the raw one's): low 30, high 60.
     qt::LineParams canny;
     canny.front_end = qt::EdgeFrontEnd::canny;
     canny.edge_threshold = 30;

@@ -1,4 +1,4 @@
-// The filtering-geometry paper's comparison (§IV, Figs. 10–12) on generated airborne sequences
+// The Filtering and Geometry paper's comparison (§IV, Figs. 10–12) on generated airborne sequences
 // (platform/scene/ground_sequence.h): template matching only, filter only, homography only and the
 // fused method, plus the fused method without Table III's reset, on the same frames. Prints a
 // table for each of the first sequences and over all of them, one line per sequence on the

@@ -1,4 +1,4 @@
-// Host benchmark of the line tracker on quadrangle-3kf §3's synthetic motions
+// Host benchmark of the line tracker on the Quadrangle Detection paper §3's synthetic motions
 // (platform/scene/line_motion.h): Experiment 1 (pure translation, 24 directions × 3 speeds, 20
 // random segments) and Experiment 2 (pure rotation at a fixed Hough r, 3 radii × 5 turn rates, 20
 // start angles; rotation about the image origin as in the paper, and about the frame centre),
@@ -95,11 +95,11 @@ void print_rotation(const std::vector<Tracker>& tr, const std::vector<sc::Rotati
     std::printf("\n");
 }
 
-// Experiment 2 under the settings quadrangle-3kf §3.2 leaves open — the frame size (which places
-// the 2nd and 3rd filters' origins), the pivot and measurement noise — against the paper's two
-// readings of its Figure 6: (a) "the score of 3KF drops below 20 % when the angular velocity
-// reaches 4 degrees per frame and higher for all tested value of r"; (b) 3KF scores above 1KF and
-// 2KF (its conclusion). One row per setting.
+// Experiment 2 under the settings the Quadrangle Detection paper §3.2 leaves open — the frame size
+// (which places the 2nd and 3rd filters' origins), the pivot and measurement noise — against the
+// paper's two readings of its Figure 6: (a) "the score of 3KF drops below 20 % when the angular
+// velocity reaches 4 degrees per frame and higher for all tested value of r"; (b) 3KF scores above
+// 1KF and 2KF (its conclusion). One row per setting.
 void print_paper_setting(const sc::MotionOptions& base) {
     std::printf(
         "### Experiment 2 in the settings the paper leaves open: (a) 3KF below 20 %% from "
@@ -269,8 +269,10 @@ int main(int argc, char** argv) {
         exp2c.push_back(sc::rotation_experiment(k.params, centre, opt));
     }
 
-    std::printf("## Line tracker on quadrangle-3kf §3 motions (%dx%d, band %g px, noise %g px)\n\n",
-                kFrameW, kFrameH, opt.band_px, opt.noise_sigma);
+    std::printf(
+        "## Line tracker on the Quadrangle Detection paper §3 motions (%dx%d, band %g px, noise %g "
+        "px)\n\n",
+        kFrameW, kFrameH, opt.band_px, opt.noise_sigma);
     print_translation(tr, exp1);
     print_rotation(tr, exp2o, "the image origin");
     print_rotation(tr, exp2c, "the frame centre");

@@ -403,7 +403,7 @@ const FlagTable<DetectOptions, Command>& detect_flags() {
             track_only(integer<uint32_t>(
                 "draw-every", "N", "track --draw: draw frames 0, N, 2N, ...", host::kDrawEveryRange,
                 [](DetectOptions& o) -> uint32_t& { return o.draw_every; })),
-            // quadrangle-3kf section 2.5-2.7 and quad_tracker.h.
+            // the Quadrangle Detection paper sections 2.5-2.7 and quad_tracker.h.
             track_only(
                 {"model", "paper|turn",
                  "line tracker per side: paper = the paper's N Kalman filters on closest points, "

@@ -1,6 +1,6 @@
 // The flags of `quadtrack target` and `quadtrack homography`: one table gives each flag its
 // parameter, unit, range and help line, so parsing and --help cannot disagree. Names follow
-// filtering-geometry.txt (Q, R, the NDS and reprojection gates, the reset).
+// the Filtering and Geometry paper (Q, R, the NDS and reprojection gates, the reset).
 #pragma once
 #include <cstdio>
 #include <string>

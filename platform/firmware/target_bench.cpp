@@ -1,4 +1,4 @@
-// The target tracker of the filtering-geometry paper on the Cortex-M4F (hard float): the whole
+// The target tracker of the Filtering and Geometry paper on the Cortex-M4F (hard float): the whole
 // qt::TargetPipeline<qt::QvgaTemplateOnly> (default parameters) on the frames of target_frames.h,
 // written at build time by target_expected (target_expected_main.cpp) and linked into the
 // FRAMES region, outside the flash budget. Each frame is fed row by row, as a camera delivers

@@ -1,8 +1,8 @@
 // The moving-board sequence of the demo and of the firmware's chain vectors: the default board
 // (board_scene.h) moving and turning over kBoardSequenceFrames frames; in frames
 // kFirstHiddenFrame .. kLastHiddenFrame two dark bars hide its top and bottom sides (as in
-// quadrangle-3kf's frames 41–43, where those sides are not extracted), so a tracker has to
-// predict them.
+// the Quadrangle Detection paper's frames 41–43, where those sides are not extracted), so a tracker
+// has to predict them.
 #pragma once
 #include "io/grey_image.h"
 #include "scene/board_scene.h"

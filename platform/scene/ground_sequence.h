@@ -1,9 +1,9 @@
-// The airborne target sequence (the filtering-geometry paper's setting): a pinhole camera flying
-// over a textured ground plane Z = 0 keeps a small vehicle in view, loses it under a flare for a
-// spell (occlusion), then looks away so that the vehicle leaves the image for a spell (out of
-// view) and comes back. Every frame comes with its ground truth: where the vehicle is in the
-// image (also when hidden or outside), the ground → image homography and the true inter-frame
-// homography of the ground plane, which a tracker estimates from Harris corners and NCC matches.
+// The airborne target sequence (the Filtering and Geometry paper's setting): a pinhole camera
+// flying over a textured ground plane Z = 0 keeps a small vehicle in view, loses it under a flare
+// for a spell (occlusion), then looks away so that the vehicle leaves the image for a spell (out of
+// view) and comes back. Every frame comes with its ground truth: where the vehicle is in the image
+// (also when hidden or outside), the ground → image homography and the true inter-frame homography
+// of the ground plane, which a tracker estimates from Harris corners and NCC matches.
 //
 // Geometry. Ground units are metres, X east, Y north. The camera at altitude A looks ahead of
 // nadir by the tilt θ along its heading ψ (the image's up direction), so there is perspective;

@@ -1,8 +1,9 @@
-// The synthetic line motions of quadrangle-3kf §3 and its score, the overlap ratio, in double
-// precision, for benchmarking the line tracker (core/tracking/line_tracker.h) against exact ground
-// truth. Host only (heap, double). Randomness comes from qt::Pcg32 and sines/cosines from
-// det_math.h, so the data are the same on every platform; measured_segment() uses std::atan2, whose
-// last ulp may differ between libms (it can flip a binary angle's last unit, 8e-8°, very rarely).
+// The synthetic line motions of the Quadrangle Detection paper §3 and its score, the overlap ratio,
+// in double precision, for benchmarking the line tracker (core/tracking/line_tracker.h) against
+// exact ground truth. Host only (heap, double). Randomness comes from qt::Pcg32 and sines/cosines
+// from det_math.h, so the data are the same on every platform; measured_segment() uses std::atan2,
+// whose last ulp may differ between libms (it can flip a binary angle's last unit, 8e-8°, very
+// rarely).
 //
 // Coordinates: pixels, pixel centres at integers, x to the right, y down; angles in degrees
 // measured from +x towards +y (clockwise on screen), as in core/lines/segment.h.

@@ -1,7 +1,7 @@
 // `quadtrack track` run in-process on a generated sequence: a board moving and turning, with
-// dark bars over its top and bottom sides in three middle frames (quadrangle-3kf's frames
-// 41–43). Its JSON lines are parsed back and checked against the scene generator's corners, and
-// every error path gives its exit status and one line on stderr.
+// dark bars over its top and bottom sides in three middle frames (the Quadrangle Detection paper's
+// frames 41–43). Its JSON lines are parsed back and checked against the scene generator's corners,
+// and every error path gives its exit status and one line on stderr.
 #include <catch2/catch.hpp>
 
 #include <array>

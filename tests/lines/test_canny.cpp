@@ -1,8 +1,8 @@
-// The lines stage's Canny front end (quadrangle-3kf §2.3; LineParams::front_end = canny): the
-// streaming binomial smoothing (core/lines/smooth_rows.h) against a direct 2-D convolution
-// written here in double with replicated borders, hysteresis (EdgeList::hysteresis) against a
-// breadth-first flood fill over a magnitude bitmap written here, and the whole stage in Canny
-// mode on noisy polygon scenes.
+// The lines stage's Canny front end (the Quadrangle Detection paper §2.3; LineParams::front_end =
+// canny): the streaming binomial smoothing (core/lines/smooth_rows.h) against a direct 2-D
+// convolution written here in double with replicated borders, hysteresis (EdgeList::hysteresis)
+// against a breadth-first flood fill over a magnitude bitmap written here, and the whole stage in
+// Canny mode on noisy polygon scenes.
 #include <catch2/catch.hpp>
 
 #include <cmath>

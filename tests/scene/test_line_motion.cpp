@@ -1,6 +1,6 @@
-// quadrangle-3kf §3 bench data and score (platform/scene/line_motion.h): the overlap ratio on
-// hand-worked cases, the motion generators' geometry, and the acceptance checks for
-// the turn model on Experiments 1 and 2.
+// the Quadrangle Detection paper §3 bench data and score (platform/scene/line_motion.h): the
+// overlap ratio on hand-worked cases, the motion generators' geometry, and the acceptance
+// checks for the turn model on Experiments 1 and 2.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // The track command's test sequence written as PGM files: the default board turning and moving,
-// with the demo's dark bars over its top and bottom sides in three middle frames (quadrangle-3kf's
-// frames 41–43, where the paper's sides were missed). Tests only.
+// with the demo's dark bars over its top and bottom sides in three middle frames (the Quadrangle
+// Detection paper's frames 41–43, where the paper's sides were missed). Tests only.
 #pragma once
 #include <catch2/catch.hpp>
 

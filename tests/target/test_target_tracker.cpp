@@ -1,10 +1,10 @@
-// The target tracker (filtering-geometry.txt §III, Tables II and III): its float Kalman filter
-// (core/target/float/target_kalman.h) against an independent double-precision 4×4 filter written
-// here from the textbook equations, change_frame() against exact scalings and a finite-difference
-// Jacobian, the fused tracker's states, gates, reset and lost rules on hand-worked frames
-// (core/target/float/target_tracker.h), the comparison methods, and match_displacement_q8
-// (core/target/float/frame_homography.h) on patches rendered from a smooth function at sub-pixel
-// shifts.
+// The target tracker (the Filtering and Geometry paper §III, Tables II and III): its float Kalman
+// filter (core/target/float/target_kalman.h) against an independent double-precision 4×4 filter
+// written here from the textbook equations, change_frame() against exact scalings and a
+// finite-difference Jacobian, the fused tracker's states, gates, reset and lost rules on
+// hand-worked frames (core/target/float/target_tracker.h), the comparison methods, and
+// match_displacement_q8 (core/target/float/frame_homography.h) on patches rendered from a smooth
+// function at sub-pixel shifts.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // The fixed-point Kalman filter of the 3KF tracker (core/tracking/kalman.h) against an independent
-// double-precision reference: the paper's 4-state filter (quadrangle-3kf.txt §2.6, eqs. (3)–(5))
-// with full 4×4 matrices, X = A X, P = A P Aᵀ + Q, S = H P Hᵀ + R, K = P Hᵀ S⁻¹,
-// X += K (Z − H X), P = (I − K H) P — no 2×2 shortcut, no block structure assumed.
+// double-precision reference: the paper's 4-state filter (the Quadrangle Detection paper §2.6, eqs.
+// (3)–(5)) with full 4×4 matrices, X = A X, P = A P Aᵀ + Q, S = H P Hᵀ + R, K = P Hᵀ S⁻¹, X += K (Z
+// − H X), P = (I − K H) P — no 2×2 shortcut, no block structure assumed.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

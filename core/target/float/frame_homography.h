@@ -20,7 +20,7 @@ namespace qt {
 // What a point pair for the homography is made of (see the top of this file).
 enum class PairSource : uint8_t {
     displacement,  // A's corner pixel and the patch displacement into B (ours, the default)
-    corners,       // the two matched corners' sub-pixel positions (filtering-geometry Table I)
+    corners,       // the two matched corners' sub-pixel positions (the paper's Table I)
 };
 inline const char* pair_source_name(PairSource p) {
     return p == PairSource::corners ? "corners" : "displacement";

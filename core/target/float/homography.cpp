@@ -1,7 +1,7 @@
-// Plane-to-plane homographies (filtering-geometry.txt §II-A, equations (1)-(5), (7), Table I
-// step 3) in single-precision float: Hartley-normalised 4-point solver (8×8 Gaussian
-// elimination, h9 = 1), RANSAC with an adaptive iteration count, normalised DLT refit (9×9
-// normal matrix, cyclic Jacobi), Sampson error. See homography.h for the contract.
+// Plane-to-plane homographies (the Filtering and Geometry paper §II-A, equations (1)-(5), (7),
+// Table I step 3) in single-precision float: Hartley-normalised 4-point solver (8×8 Gaussian
+// elimination, h9 = 1), RANSAC with an adaptive iteration count, normalised DLT refit (9×9 normal
+// matrix, cyclic Jacobi), Sampson error. See homography.h for the contract.
 //
 // Determinism: only +, −, ×, ÷, sqrtf, fabsf, comparisons and integer operations, in a fixed
 // order, compiled with -ffp-contract=off: IEEE-754 single precision rounds each of them alike on

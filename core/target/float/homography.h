@@ -1,6 +1,6 @@
-// Plane-to-plane homographies (filtering-geometry.txt §II-A, equations (1)-(5), Table I step 3):
-// a normalised 4-point solver for RANSAC hypotheses, RANSAC with an adaptive iteration count
-// and the project's PRNG, a least-squares refit on the inliers, and the reprojection error of
+// Plane-to-plane homographies (the Filtering and Geometry paper §II-A, equations (1)-(5), Table I
+// step 3): a normalised 4-point solver for RANSAC hypotheses, RANSAC with an adaptive iteration
+// count and the project's PRNG, a least-squares refit on the inliers, and the reprojection error of
 // equation (7).
 //
 // Single-precision float: this stage is for parts with an FPU (Cortex-M4F/M7, ARM Linux,

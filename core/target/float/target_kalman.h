@@ -1,4 +1,5 @@
-// The target tracker's Kalman filter (filtering-geometry.txt Table II) in single precision:
+// The target tracker's Kalman filter (the Filtering and Geometry paper Table II) in single
+// precision:
 //
 //   x = [x, y, ẋ, ẏ]ᵀ (px, px/frame),  z = [x, y]ᵀ (px),  Δt = k − (k−1) = 1 frame,
 //   Φ = [[1,0,1,0],[0,1,0,1],[0,0,1,0],[0,0,0,1]],  H = [[1,0,0,0],[0,1,0,0]],

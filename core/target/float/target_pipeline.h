@@ -1,8 +1,8 @@
-// The target tracker's whole frame, streamed row by row (filtering-geometry.txt Fig. 3 with
-// Table I): camera rows → gradient words (gradient_stage.h, or the FPGA block's) → Harris
-// corners with their patches (harris.h) → NCC matches to the previous frame's corners →
-// RANSAC homography → target tracker (target_tracker.h), whose measurement is the template
-// found by NCC (template_search.h) in a region of the frame captured as its rows went by.
+// The target tracker's whole frame, streamed row by row (the Filtering and Geometry paper Fig. 3
+// with Table I): camera rows → gradient words (gradient_stage.h, or the FPGA block's) → Harris
+// corners with their patches (harris.h) → NCC matches to the previous frame's corners → RANSAC
+// homography → target tracker (target_tracker.h), whose measurement is the template found by NCC
+// (template_search.h) in a region of the frame captured as its rows went by.
 //
 // No frame buffer: the region captured is where the tracker expects the target under constant
 // camera motion (TargetTracker::expected()), widened by capture_margin_px for the difference

@@ -1,6 +1,6 @@
-// The target tracker (filtering-geometry.txt §III, Fig. 3, Tables II and III): a Kalman filter
-// (target_kalman.h) fused with the frame-to-frame homographies of the ground, accumulated while
-// the target is not measured and reset when it is found again.
+// The target tracker (the Filtering and Geometry paper §III, Fig. 3, Tables II and III): a Kalman
+// filter (target_kalman.h) fused with the frame-to-frame homographies of the ground, accumulated
+// while the target is not measured and reset when it is found again.
 //
 // Coordinates. The filter lives in the image of a reference frame m; the accumulated homography
 // A = Π H(i−1→i) for i = m+1..n (equation (11)) maps that image into the current frame n. A
