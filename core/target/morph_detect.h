@@ -55,7 +55,26 @@ public:
                           Polarity polarity, const MorphParams& p) {
         MorphDetection out;
         const int32_t e = p.element < 3 ? 3 : p.element > 63 ? 63 : p.element;
-        const int32_t reach = static_cast<int32_t>(radius) + e / 2 + 1;
+        if (!load_window(region, cx, cy, static_cast<int32_t>(radius) + e / 2 + 1)) return out;
+        const uint8_t* src = region.pixels +
+                             static_cast<uint32_t>(wy0_ - region.y0) * region.stride +
+                             static_cast<uint32_t>(wx0_ - region.x0);
+        // Opening = dilate(erode(I)); closing = erode(dilate(I)).
+        const bool bright = polarity == Polarity::bright;
+        filter(e, bright);   // erode for the opening, dilate for the closing
+        filter(e, !bright);  // then the other
+        const int32_t half = tophat_peak(src, region.stride, bright) / 2;
+        const int32_t thr = half > p.min_contrast ? half : p.min_contrast;
+        const uint16_t n = label_runs(src, region.stride, bright, thr, out);
+        sum_into_roots(n);
+        nearest_cluster(n, cx, cy, radius, p, out);
+        return out;
+    }
+
+private:
+    // Copies the window of centres within ±reach px of (cx, cy), clipped to the region and to
+    // MaxW × MaxH, into buf_; false when nothing is left.
+    bool load_window(const PixelRegion& region, int32_t cx, int32_t cy, int32_t reach) {
         int64_t x0 = int64_t{cx} - reach, y0 = int64_t{cy} - reach;
         int64_t x1 = int64_t{cx} + reach + 1, y1 = int64_t{cy} + reach + 1;  // exclusive
         if (x0 < region.x0) x0 = region.x0;
@@ -64,47 +83,49 @@ public:
         if (y1 > int64_t{region.y0} + region.h) y1 = int64_t{region.y0} + region.h;
         if (x1 - x0 > MaxW) x1 = x0 + MaxW;
         if (y1 - y0 > MaxH) y1 = y0 + MaxH;
-        if (x1 <= x0 || y1 <= y0 || region.pixels == nullptr) return out;
-        const int32_t w = static_cast<int32_t>(x1 - x0), h = static_cast<int32_t>(y1 - y0);
+        if (x1 <= x0 || y1 <= y0 || region.pixels == nullptr) return false;
         wx0_ = static_cast<int32_t>(x0);
         wy0_ = static_cast<int32_t>(y0);
-        w_ = w;
-        h_ = h;
+        w_ = static_cast<int32_t>(x1 - x0);
+        h_ = static_cast<int32_t>(y1 - y0);
         const uint8_t* src = region.pixels +
                              static_cast<uint32_t>(wy0_ - region.y0) * region.stride +
                              static_cast<uint32_t>(wx0_ - region.x0);
-        for (int32_t y = 0; y < h; ++y)
-            for (int32_t x = 0; x < w; ++x)
+        for (int32_t y = 0; y < h_; ++y)
+            for (int32_t x = 0; x < w_; ++x)
                 buf_[y * MaxW + x] =
                     src[static_cast<uint32_t>(y) * region.stride + static_cast<uint32_t>(x)];
-        // Opening = dilate(erode(I)); closing = erode(dilate(I)).
-        const bool bright = polarity == Polarity::bright;
-        filter(e, bright);   // erode for the opening, dilate for the closing
-        filter(e, !bright);  // then the other
-        // Top-hat and its peak.
+        return true;
+    }
+
+    int32_t tophat_peak(const uint8_t* src, uint32_t stride, bool bright) const {
         int32_t peak = 0;
-        for (int32_t y = 0; y < h; ++y)
-            for (int32_t x = 0; x < w; ++x) {
-                const int32_t t = tophat(src, region.stride, x, y, bright);
+        for (int32_t y = 0; y < h_; ++y)
+            for (int32_t x = 0; x < w_; ++x) {
+                const int32_t t = tophat(src, stride, x, y, bright);
                 peak = t > peak ? t : peak;
             }
-        const int32_t half = peak / 2;
-        const int32_t thr = half > p.min_contrast ? half : p.min_contrast;
-        // Runs of detections, joined to the touching runs of the row above (8-connected).
+        return peak;
+    }
+
+    // Runs of detections (top-hat ≥ thr), each joined to the touching runs of the row above
+    // (8-connected); returns how many runs_ holds.
+    uint16_t label_runs(const uint8_t* src, uint32_t stride, bool bright, int32_t thr,
+                        MorphDetection& out) {
         uint16_t n = 0;
         uint16_t prev_first = 0, prev_end = 0;  // the row above's runs
-        for (int32_t y = 0; y < h; ++y) {
+        for (int32_t y = 0; y < h_; ++y) {
             const uint16_t row_first = n;
             int32_t x = 0;
-            while (x < w) {
-                if (tophat(src, region.stride, x, y, bright) < thr) {
+            while (x < w_) {
+                if (tophat(src, stride, x, y, bright) < thr) {
                     ++x;
                     continue;
                 }
                 const int32_t start = x;
                 int32_t sw = 0, sx = 0, sy = 0;
-                for (; x < w; ++x) {
-                    const int32_t t = tophat(src, region.stride, x, y, bright);
+                for (; x < w_; ++x) {
+                    const int32_t t = tophat(src, stride, x, y, bright);
                     if (t < thr) break;
                     sw += t;
                     sx += t * x;
@@ -129,7 +150,11 @@ public:
             prev_first = row_first;
             prev_end = n;
         }
-        // Sums into the roots, then the candidate.
+        return n;
+    }
+
+    // Each run's sums added into its cluster's root.
+    void sum_into_roots(uint16_t n) {
         for (uint16_t i = 0; i < n; ++i) {
             const uint16_t r = find(i);
             if (r == i) continue;
@@ -138,6 +163,12 @@ public:
             runs_[r].sx += runs_[i].sx;
             runs_[r].sy += runs_[i].sy;
         }
+    }
+
+    // The candidate: the cluster of an area within the limits whose centroid lies within
+    // ±radius px of (cx, cy) and nearest it (ties: the first in raster order).
+    void nearest_cluster(uint16_t n, int32_t cx, int32_t cy, uint16_t radius, const MorphParams& p,
+                         MorphDetection& out) const {
         int64_t best_d = -1;
         const int64_t ccx = int64_t{cx} - wx0_, ccy = int64_t{cy} - wy0_;
         for (uint16_t i = 0; i < n; ++i) {
@@ -152,17 +183,15 @@ public:
             const int64_t lim = 256 * int64_t{radius};
             if (dx < -lim || dx > lim || dy < -lim || dy > lim) continue;  // not a candidate centre
             const int64_t d = dx * dx + dy * dy;
-            if (best_d >= 0 && d >= best_d) continue;  // ties: the first in raster order
+            if (best_d >= 0 && d >= best_d) continue;
             best_d = d;
             out.found = true;
             out.x_q8 = static_cast<int32_t>(qx + 256 * int64_t{wx0_});
             out.y_q8 = static_cast<int32_t>(qy + 256 * int64_t{wy0_});
             out.area = r.area;
         }
-        return out;
     }
 
-private:
     struct Run {
         int16_t x0 = 0, x1 = 0;  // first and last column, window px
         uint16_t parent = 0;

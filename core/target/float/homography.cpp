@@ -324,6 +324,99 @@ uint16_t adaptive_limit(uint32_t inliers, uint32_t n, float ln_1mc, uint16_t max
 // log(1 − c): c <= 0 → 0 (stop at the first hypothesis); c >= 1 or NaN → 1, "never adapt".
 float ln_one_minus(float c) { return c < 1.0f ? (c > 0 ? ln_unit(1.0f - c) : 0.0f) : 1.0f; }
 
+// A hypothesis and how it fits the pairs: inliers and their sum of squared transfer errors.
+struct Hypothesis {
+    Homography h;
+    uint32_t count = 0;
+    float err = FLT_MAX;
+    bool better_than(const Hypothesis& o) const {
+        return count > o.count || (count == o.count && err < o.err);
+    }
+};
+
+// Four distinct indices below n, bounded time: the k-th is uniform over the n − k indices not
+// yet drawn (below(n − k), then stepped over the drawn ones, kept sorted).
+void draw_sample(Pcg32& rng, uint16_t n, uint16_t idx[4]) {
+    for (uint16_t k = 0; k < 4; ++k) {
+        uint16_t r = static_cast<uint16_t>(rng.below(static_cast<uint32_t>(n - k)));
+        uint16_t j = 0;
+        for (; j < k && r >= idx[j]; ++j) ++r;  // idx[0..k) ascending
+        for (uint16_t m = k; m > j; --m) idx[m] = idx[m - 1];
+        idx[j] = r;
+    }
+}
+
+// RANSAC's hypotheses until the adaptive count: the best 4-point homography, false when every
+// sample was degenerate. iterations: the hypotheses drawn.
+bool best_hypothesis(const PointPair* pairs, uint16_t n, const RansacParams& config, float thr2,
+                     Hypothesis& best, uint16_t& iterations) {
+    const float ln_1mc = ln_one_minus(config.confidence);
+    Pcg32 rng(config.seed);
+    bool have = false;
+    uint16_t limit = config.max_iterations;
+    uint16_t it = 0;
+    while (it < limit) {
+        ++it;
+        uint16_t idx[4] = {};
+        draw_sample(rng, n, idx);
+        const PointPair sample[4] = {pairs[idx[0]], pairs[idx[1]], pairs[idx[2]], pairs[idx[3]]};
+        Hypothesis c;
+        if (!homography_from_4(sample, c.h)) continue;  // degenerate samples count as iterations
+        c.count = count_inliers(c.h, pairs, n, thr2, have ? best.count : 0, c.err);
+        if (have && !c.better_than(best)) continue;
+        const bool more = !have || c.count > best.count;
+        have = true;
+        best = c;
+        if (more) {
+            const uint16_t lim = adaptive_limit(c.count, n, ln_1mc, config.max_iterations);
+            limit = lim < limit ? lim : limit;
+        }
+    }
+    iterations = it;
+    return have;
+}
+
+// Refit on the inliers, recount under the refit, and refit again on the new set; a round's H
+// replaces the current one only when it fits better (so a refit pulled off by borderline points
+// is not taken; if no refit is better, or it is degenerate, the 4-point hypothesis stays).
+Hypothesis refined(const PointPair* pairs, uint16_t n, float thr2, Hypothesis cur) {
+    for (int round = 0; round < kRefitRounds; ++round) {
+        Selector sel;
+        sel.h = &cur.h;
+        sel.thr2 = thr2;
+        Hypothesis r;
+        if (!refit_selected(pairs, n, sel, r.h)) break;
+        r.count = count_inliers(r.h, pairs, n, thr2, 0, r.err);
+        if (!r.better_than(cur)) break;
+        cur = r;
+    }
+    return cur;
+}
+
+// Equation (7) for res.h: the RMS over its inliers (marked in inlier_mask), D_rep over every
+// matched pair as the paper writes it, and the capped RMS the default gate reads.
+void judge(const PointPair* pairs, uint16_t n, float thr2, uint8_t* inlier_mask,
+           RansacResult& res) {
+    float sum = 0;  // px²
+    for (uint16_t i = 0; i < n; ++i) {
+        if (!(transfer_error_sq(res.h, pairs[i]) <= thr2)) continue;
+        if (inlier_mask) inlier_mask[i] = 1;
+        sum += reprojection_error_sq(res.h, pairs[i]);
+    }
+    const float mean = sum / static_cast<float>(res.inliers);  // inliers >= min_inl >= 4
+    res.reprojection_px = mean <= FLT_MAX ? sqrtf(mean) : FLT_MAX;
+    const float cap = 4.0f * thr2;  // (2·inlier_px)²
+    float all = 0, capped = 0;
+    for (uint16_t i = 0; i < n; ++i) {
+        const float e = reprojection_error_sq(res.h, pairs[i]);  // >= 0, FLT_MAX at most
+        all = all + e <= FLT_MAX ? all + e : FLT_MAX;
+        capped += e < cap ? e : cap;
+    }
+    res.d_rep = all;
+    const float capped_mean = capped / static_cast<float>(n);
+    res.d_rep_capped_px = capped_mean <= FLT_MAX ? sqrtf(capped_mean) : FLT_MAX;
+}
+
 }  // namespace
 
 bool nearly_collinear(float x0, float y0, float x1, float y1, float x2, float y2, float min_sin) {
@@ -515,97 +608,21 @@ RansacResult estimate_homography(const PointPair* pairs, uint16_t n, const Ransa
     const uint32_t min_inl = config.min_inliers > 4 ? config.min_inliers : 4u;
     if (!pairs || n < 4 || n < min_inl) return res;          // too_few_pairs
     const float thr2 = config.inlier_px * config.inlier_px;  // NaN or 0: nothing is an inlier
-    const float ln_1mc = ln_one_minus(config.confidence);
-
-    Pcg32 rng(config.seed);
-    Homography best;
-    bool have = false;
-    uint32_t best_count = 0;
-    float best_err = FLT_MAX;
-    uint16_t limit = config.max_iterations;
-    uint16_t it = 0;
-    while (it < limit) {
-        ++it;
-        // Four distinct indices, bounded time: the k-th is uniform over the n − k indices not
-        // yet drawn (below(n − k), then stepped over the drawn ones, kept sorted).
-        uint16_t idx[4] = {};
-        for (uint16_t k = 0; k < 4; ++k) {
-            uint16_t r = static_cast<uint16_t>(rng.below(static_cast<uint32_t>(n - k)));
-            uint16_t j = 0;
-            for (; j < k && r >= idx[j]; ++j) ++r;  // idx[0..k) ascending
-            for (uint16_t m = k; m > j; --m) idx[m] = idx[m - 1];
-            idx[j] = r;
-        }
-        const PointPair sample[4] = {pairs[idx[0]], pairs[idx[1]], pairs[idx[2]], pairs[idx[3]]};
-        Homography h;
-        if (!homography_from_4(sample, h)) continue;  // degenerate samples count as iterations
-        float err = 0;
-        const uint32_t cnt = count_inliers(h, pairs, n, thr2, have ? best_count : 0, err);
-        if (!have || cnt > best_count || (cnt == best_count && err < best_err)) {
-            const bool more = !have || cnt > best_count;
-            have = true;
-            best = h;
-            best_count = cnt;
-            best_err = err;
-            if (more) {
-                const uint16_t lim = adaptive_limit(cnt, n, ln_1mc, config.max_iterations);
-                limit = lim < limit ? lim : limit;
-            }
-        }
-    }
-    res.iterations = it;
-    if (!have) {
+    Hypothesis best;
+    if (!best_hypothesis(pairs, n, config, thr2, best, res.iterations)) {
         res.status = HomographyStatus::degenerate;
         return res;
     }
-    if (best_count < min_inl) {
+    if (best.count < min_inl) {
         res.status = HomographyStatus::no_consensus;
-        res.inliers = static_cast<uint16_t>(best_count);  // the best hypothesis's, for diagnosis
+        res.inliers = static_cast<uint16_t>(best.count);  // the best hypothesis's, for diagnosis
         return res;
     }
-    // Refit on the inliers, recount under the refit, and refit again on the new set; a round's
-    // H replaces the current one only when it has more inliers, or as many with a smaller sum
-    // of squared transfer errors (so a refit pulled off by borderline points is not taken; if no
-    // refit is better, or the refit is degenerate, the best 4-point hypothesis stays).
-    Homography cur = best;
-    uint32_t cur_count = best_count;
-    float cur_err = best_err;
-    for (int round = 0; round < kRefitRounds; ++round) {
-        Selector sel;
-        sel.h = &cur;
-        sel.thr2 = thr2;
-        Homography r;
-        if (!refit_selected(pairs, n, sel, r)) break;
-        float err = 0;
-        const uint32_t cnt = count_inliers(r, pairs, n, thr2, 0, err);
-        if (!(cnt > cur_count || (cnt == cur_count && err < cur_err))) break;
-        cur = r;
-        cur_count = cnt;
-        cur_err = err;
-    }
+    const Hypothesis cur = refined(pairs, n, thr2, best);
     res.status = HomographyStatus::ok;
-    res.h = cur;
-    res.inliers = static_cast<uint16_t>(cur_count);
-    float sum = 0;  // equation (7) over the inliers, px²
-    for (uint16_t i = 0; i < n; ++i) {
-        if (!(transfer_error_sq(cur, pairs[i]) <= thr2)) continue;
-        if (inlier_mask) inlier_mask[i] = 1;
-        sum += reprojection_error_sq(cur, pairs[i]);
-    }
-    const float mean = sum / static_cast<float>(cur_count);  // cur_count >= min_inl >= 4
-    res.reprojection_px = mean <= FLT_MAX ? sqrtf(mean) : FLT_MAX;
-    // D_rep over every matched pair (inliers and the rest), as the paper writes equation (7),
-    // and its capped mean.
-    const float cap = 4.0f * thr2;  // (2·inlier_px)²
-    float all = 0, capped = 0;
-    for (uint16_t i = 0; i < n; ++i) {
-        const float e = reprojection_error_sq(cur, pairs[i]);  // >= 0, FLT_MAX at most
-        all = all + e <= FLT_MAX ? all + e : FLT_MAX;
-        capped += e < cap ? e : cap;
-    }
-    res.d_rep = all;
-    const float capped_mean = capped / static_cast<float>(n);
-    res.d_rep_capped_px = capped_mean <= FLT_MAX ? sqrtf(capped_mean) : FLT_MAX;
+    res.h = cur.h;
+    res.inliers = static_cast<uint16_t>(cur.count);
+    judge(pairs, n, thr2, inlier_mask, res);
     return res;
 }
 

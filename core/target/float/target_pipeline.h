@@ -218,110 +218,15 @@ public:
         mark(TargetStage::harris);
         const Features& cur = harris_.features();
         out.features = cur.count;
-        FrameGeometry g;
-        // Another size than the previous frame's: its corners cannot be matched; the track goes
-        // on without a homography this frame.
-        if (have_previous_ && prev_.width == width_ && prev_.height == height_) {
-            FrameHomographyParams gc = params_.geometry;
-            // Corners move with the camera: look for each where the last homography sends it.
-            float ex, ey;
-            const float cx = 0.5f * static_cast<float>(width_),
-                        cy = 0.5f * static_cast<float>(height_);
-            if (tracking_ && apply_homography(last_h_, cx, cy, ex, ey)) {
-                gc.match.offset_x = clamp16(ex - cx);
-                gc.match.offset_y = clamp16(ey - cy);
-            }
-            const bool exclude = params_.ground_corners_only && tracking_ && target_box_.valid;
-            out.geometry = homography_between(
-                prev_, cur, gc, scratch_,
-                [&](const Feature<PatchRadius>& f) {
-                    return !exclude || !target_box_.reaches(f.px, f.py, PatchRadius);
-                },
-                [&] { mark(TargetStage::match); });
-            mark(TargetStage::homography);
-            g.valid = out.geometry.ransac.status == HomographyStatus::ok;
-            g.h = out.geometry.ransac.h;
-            g.reprojection_px = out.geometry.ransac.reprojection_px;
-            g.d_rep = out.geometry.ransac.d_rep;
-            g.d_rep_capped_px = out.geometry.ransac.d_rep_capped_px;
-            if (g.valid) last_h_ = g.h;
-        }
+        const FrameGeometry g = frame_geometry(cur, out, mark);
         if (pending_target_ && target_captured_) {
             pending_target_ = false;
-            const PixelRegion& r = capture_.region();
-            const int32_t bx = static_cast<int32_t>(box_block(roi_x_, ox_)),
-                          by = static_cast<int32_t>(box_block(roi_y_, oy_));
-            const uint8_t bw = static_cast<uint8_t>(box_blocks(roi_w_)),
-                          bh = static_cast<uint8_t>(box_blocks(roi_h_));
-            if (!box_in_frame() || !cut_template(r, bx, by, bw, bh, template_)) {
-                tracking_ = false;
+            if (!start_target(out)) {
                 keep_features(cur);
                 return Status::bad_size;  // the box is not wholly inside the frame
             }
-            tracker_.init(static_cast<float>(roi_x_) + 0.5f * static_cast<float>(roi_w_ - 1),
-                          static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1),
-                          width_, height_, params_.tracker);
-            last_h_ = Homography{};
-            learn_morphology(r, bx, by, bw, bh);
-            // The box's centre less the template's (its blocks' centre), 1/256 px: 0 at step 1.
-            offset_x_q8_ =
-                static_cast<int32_t>(int64_t{roi_x_} * 256 + (roi_w_ - 1) * 128 -
-                                     to_frame_q8(int64_t{bx} * 256 + (bw - 1) * 128, ox_));
-            offset_y_q8_ =
-                static_cast<int32_t>(int64_t{roi_y_} * 256 + (roi_h_ - 1) * 128 -
-                                     to_frame_q8(int64_t{by} * 256 + (bh - 1) * 128, oy_));
-            tracking_ = true;
-            out.started = true;
-            out.estimate.state = tracker_.state();
-            out.estimate.x = static_cast<float>(roi_x_) + 0.5f * static_cast<float>(roi_w_ - 1);
-            out.estimate.y = static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1);
-            remember_box(out.estimate.x, out.estimate.y);
         } else if (tracking_) {
-            out.window = tracker_.predict(g);
-            // A template can only match a target it wholly covers: while the prediction puts
-            // the template across the image border (the target leaving or coming back), the
-            // best placement inside is something else, so nothing is searched.
-            if (!template_inside(out.window.x, out.window.y)) out.window.radius = 0;
-            mark(TargetStage::predict);
-            TargetMeasurement m;
-            // The window in blocks (pixels at step 1): centre and radius.
-            const int32_t wx = to_blocks(out.window.x, ox_), wy = to_blocks(out.window.y, oy_);
-            const uint16_t wr = static_cast<uint16_t>(
-                (out.window.radius + static_cast<float>(step_ - 1)) / static_cast<float>(step_));
-            if (out.window.radius > 0 && params_.detector == TargetDetector::morphological) {
-                const MorphDetection d =
-                    morph_detector_.detect(capture_.region(), wx, wy, wr, polarity_, morph_);
-                out.hit.found = d.found;
-                out.hit.x_q8 = static_cast<int32_t>(to_frame_q8(d.x_q8, ox_));
-                out.hit.y_q8 = static_cast<int32_t>(to_frame_q8(d.y_q8, oy_));
-                out.hit.score_q15 = d.found ? 32767 : 0;
-                out.hit.positions = d.clusters;
-                m.found = d.found;
-                m.x = static_cast<float>(out.hit.x_q8) * (1.0f / 256.0f);
-                m.y = static_cast<float>(out.hit.y_q8) * (1.0f / 256.0f);
-                m.score = d.found ? 1.0f : 0.0f;
-            } else if (out.window.radius > 0) {
-                out.hit = search_template(template_, capture_.region(), wx, wy, wr);
-                out.hit.x_q8 = static_cast<int32_t>(to_frame_q8(out.hit.x_q8, ox_));
-                out.hit.y_q8 = static_cast<int32_t>(to_frame_q8(out.hit.y_q8, oy_));
-                if (out.hit.found) {
-                    m.found = true;
-                    m.x = static_cast<float>(out.hit.x_q8 + offset_x_q8_) * (1.0f / 256.0f);
-                    m.y = static_cast<float>(out.hit.y_q8 + offset_y_q8_) * (1.0f / 256.0f);
-                    m.score = static_cast<float>(out.hit.score_q15) * (1.0f / 32768.0f);
-                }
-            }
-            mark(TargetStage::search);
-            out.estimate = tracker_.update(m);
-            remember_box(out.estimate.x, out.estimate.y);
-            mark(TargetStage::update);
-            const bool accepted = out.estimate.state == TargetState::measured ||
-                                  out.estimate.state == TargetState::reacquired;
-            const bool every = params_.tracker.method == TargetMethod::template_only;
-            if (accepted && params_.detector == TargetDetector::ncc_template &&
-                (every || out.hit.score_q15 < params_.refresh_score_q15) && grid_was_aligned(m))
-                refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
-            mark(TargetStage::refresh);
+            track(g, out, mark);
         }
         out.tracking = tracking_;
         keep_features(cur);
@@ -331,6 +236,126 @@ public:
     const TargetTracker& tracker() const { return tracker_; }
 
 private:
+    // Table I: the homography from the previous frame's corners to this frame's (none when the
+    // previous frame had another size: its corners cannot be matched).
+    template <class Mark>
+    FrameGeometry frame_geometry(const Features& cur, TargetFrame& out, Mark& mark) {
+        FrameGeometry g;
+        if (!have_previous_ || prev_.width != width_ || prev_.height != height_) return g;
+        FrameHomographyParams gc = params_.geometry;
+        // Corners move with the camera: look for each where the last homography sends it.
+        float ex, ey;
+        const float cx = 0.5f * static_cast<float>(width_), cy = 0.5f * static_cast<float>(height_);
+        if (tracking_ && apply_homography(last_h_, cx, cy, ex, ey)) {
+            gc.match.offset_x = clamp16(ex - cx);
+            gc.match.offset_y = clamp16(ey - cy);
+        }
+        const bool exclude = params_.ground_corners_only && tracking_ && target_box_.valid;
+        out.geometry = homography_between(
+            prev_, cur, gc, scratch_,
+            [&](const Feature<PatchRadius>& f) {
+                return !exclude || !target_box_.reaches(f.px, f.py, PatchRadius);
+            },
+            [&] { mark(TargetStage::match); });
+        mark(TargetStage::homography);
+        g.valid = out.geometry.ransac.status == HomographyStatus::ok;
+        g.h = out.geometry.ransac.h;
+        g.reprojection_px = out.geometry.ransac.reprojection_px;
+        g.d_rep = out.geometry.ransac.d_rep;
+        g.d_rep_capped_px = out.geometry.ransac.d_rep_capped_px;
+        if (g.valid) last_h_ = g.h;
+        return g;
+    }
+
+    // The frame set_target() named: its template cut, the filter started at the box's centre.
+    // False, and no track, when the box is not wholly inside the frame.
+    bool start_target(TargetFrame& out) {
+        const PixelRegion& r = capture_.region();
+        const int32_t bx = static_cast<int32_t>(box_block(roi_x_, ox_)),
+                      by = static_cast<int32_t>(box_block(roi_y_, oy_));
+        const uint8_t bw = static_cast<uint8_t>(box_blocks(roi_w_)),
+                      bh = static_cast<uint8_t>(box_blocks(roi_h_));
+        if (!box_in_frame() || !cut_template(r, bx, by, bw, bh, template_)) {
+            tracking_ = false;
+            return false;
+        }
+        const float x = static_cast<float>(roi_x_) + 0.5f * static_cast<float>(roi_w_ - 1);
+        const float y = static_cast<float>(roi_y_) + 0.5f * static_cast<float>(roi_h_ - 1);
+        tracker_.init(x, y, width_, height_, params_.tracker);
+        last_h_ = Homography{};
+        learn_morphology(r, bx, by, bw, bh);
+        // The box's centre less the template's (its blocks' centre), 1/256 px: 0 at step 1.
+        offset_x_q8_ = static_cast<int32_t>(int64_t{roi_x_} * 256 + (roi_w_ - 1) * 128 -
+                                            to_frame_q8(int64_t{bx} * 256 + (bw - 1) * 128, ox_));
+        offset_y_q8_ = static_cast<int32_t>(int64_t{roi_y_} * 256 + (roi_h_ - 1) * 128 -
+                                            to_frame_q8(int64_t{by} * 256 + (bh - 1) * 128, oy_));
+        tracking_ = true;
+        out.started = true;
+        out.estimate.state = tracker_.state();
+        out.estimate.x = x;
+        out.estimate.y = y;
+        remember_box(x, y);
+        return true;
+    }
+
+    // A tracked frame: predict (Table II), search the window, update, and re-cut the template
+    // when its match has weakened.
+    template <class Mark>
+    void track(const FrameGeometry& g, TargetFrame& out, Mark& mark) {
+        out.window = tracker_.predict(g);
+        // A template can only match a target it wholly covers: while the prediction puts the
+        // template across the image border (the target leaving or coming back), the best
+        // placement inside is something else, so nothing is searched.
+        if (!template_inside(out.window.x, out.window.y)) out.window.radius = 0;
+        mark(TargetStage::predict);
+        const TargetMeasurement m = out.window.radius > 0 ? measure(out) : TargetMeasurement{};
+        mark(TargetStage::search);
+        out.estimate = tracker_.update(m);
+        remember_box(out.estimate.x, out.estimate.y);
+        mark(TargetStage::update);
+        const bool accepted = out.estimate.state == TargetState::measured ||
+                              out.estimate.state == TargetState::reacquired;
+        const bool every = params_.tracker.method == TargetMethod::template_only;
+        if (accepted && params_.detector == TargetDetector::ncc_template &&
+            (every || out.hit.score_q15 < params_.refresh_score_q15) && grid_was_aligned(m))
+            refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
+        mark(TargetStage::refresh);
+    }
+
+    // The measurement in out.window (radius > 0) by the configured detector; out.hit in frame
+    // pixels.
+    TargetMeasurement measure(TargetFrame& out) {
+        TargetMeasurement m;
+        // The window in blocks (pixels at step 1): centre and radius.
+        const int32_t wx = to_blocks(out.window.x, ox_), wy = to_blocks(out.window.y, oy_);
+        const uint16_t wr = static_cast<uint16_t>(
+            (out.window.radius + static_cast<float>(step_ - 1)) / static_cast<float>(step_));
+        if (params_.detector == TargetDetector::morphological) {
+            const MorphDetection d =
+                morph_detector_.detect(capture_.region(), wx, wy, wr, polarity_, morph_);
+            out.hit.found = d.found;
+            out.hit.x_q8 = static_cast<int32_t>(to_frame_q8(d.x_q8, ox_));
+            out.hit.y_q8 = static_cast<int32_t>(to_frame_q8(d.y_q8, oy_));
+            out.hit.score_q15 = d.found ? 32767 : 0;
+            out.hit.positions = d.clusters;
+            m.found = d.found;
+            m.x = static_cast<float>(out.hit.x_q8) * (1.0f / 256.0f);
+            m.y = static_cast<float>(out.hit.y_q8) * (1.0f / 256.0f);
+            m.score = d.found ? 1.0f : 0.0f;
+            return m;
+        }
+        out.hit = search_template(template_, capture_.region(), wx, wy, wr);
+        out.hit.x_q8 = static_cast<int32_t>(to_frame_q8(out.hit.x_q8, ox_));
+        out.hit.y_q8 = static_cast<int32_t>(to_frame_q8(out.hit.y_q8, oy_));
+        if (out.hit.found) {
+            m.found = true;
+            m.x = static_cast<float>(out.hit.x_q8 + offset_x_q8_) * (1.0f / 256.0f);
+            m.y = static_cast<float>(out.hit.y_q8 + offset_y_q8_) * (1.0f / 256.0f);
+            m.score = static_cast<float>(out.hit.score_q15) * (1.0f / 32768.0f);
+        }
+        return m;
+    }
+
     // Whether the template, placed for a target centred at (x, y) px, lies wholly inside the
     // image: its first and last pixels (blocks of step_ px at step > 1) within the frame.
     bool template_inside(float x, float y) const {
