@@ -10,6 +10,7 @@
 #include "base/status.h"
 #include "quads/board_detector.h"
 #include "tracking/quad_tracker.h"
+#include "tracking/tracking_mode.h"
 
 namespace {
 
@@ -24,6 +25,9 @@ struct DetectorBox {
 
 struct TrackerBox {
     qt::QuadTracker tracker;
+    qt::TrackingMode mode;
+    qt::BandWindow* window = nullptr;  // the next frame's bands (tracking mode), or whole
+    bool tracking_mode = false;
     bool configured = false;
 };
 
@@ -54,6 +58,7 @@ static_assert(same(qt::Status::ok, QT_OK) && same(qt::Status::bad_size, QT_BAD_S
                   same(qt::Status::previous_frame_incomplete, QT_PREVIOUS_FRAME_INCOMPLETE) &&
                   same(qt::Status::capacity_exceeded, QT_CAPACITY_EXCEEDED),
               "qt_status mirrors qt::Status");
+static_assert(qt::kTrackingModeRanges.half_width.hi <= 255, "band_half_width_px is 8 bits");
 static_assert(static_cast<int>(qt::Contrast::bright_board) == QT_CONTRAST_BRIGHT &&
                   static_cast<int>(qt::Contrast::dark_board) == QT_CONTRAST_DARK &&
                   static_cast<int>(qt::Contrast::any) == QT_CONTRAST_ANY,
@@ -149,6 +154,10 @@ void qt_config_default(qt_config* config, uint16_t width, uint16_t height) {
     config->max_predicted = track.max_predicted;
     config->gate_angle_deg = static_cast<uint16_t>(whole_degrees(track.gate_angle));
     config->gate_distance_px = static_cast<uint16_t>(track.gate_distance.floor_int());
+    const qt::TrackingModeParams mode{};
+    config->tracking_mode = QT_TRACKING_MODE_OFF;  // as the command line's default
+    config->band_half_width_px = static_cast<uint8_t>(mode.half_width.floor_int());
+    config->full_every = mode.full_every;
 }
 
 qt_status qt_config_check(const qt_config* c) {
@@ -163,7 +172,10 @@ qt_status qt_config_check(const qt_config* c) {
                     qt::kQuadTrackerRanges.filters.contains(c->filters) &&
                     qt::kQuadTrackerRanges.max_predicted.contains(c->max_predicted) &&
                     qt::kQuadTrackerRanges.gate_angle.contains(c->gate_angle_deg) &&
-                    qt::kQuadTrackerRanges.gate_distance.contains(c->gate_distance_px);
+                    qt::kQuadTrackerRanges.gate_distance.contains(c->gate_distance_px) &&
+                    c->tracking_mode <= QT_TRACKING_MODE_ON &&
+                    qt::kTrackingModeRanges.half_width.contains(c->band_half_width_px) &&
+                    qt::kTrackingModeRanges.full_every.contains(c->full_every);
     return ok ? QT_OK : QT_BAD_CONFIG;
 }
 
@@ -181,8 +193,9 @@ qt_status qt_detector_init(qt_detector* detector, const qt_config* config) {
     return QT_OK;
 }
 
-qt_status qt_begin_frame(qt_detector* detector, uint16_t width, uint16_t height) {
-    if (detector == nullptr) return QT_NULL_POINTER;
+namespace {
+qt_status begin_frame(qt_detector* detector, uint16_t width, uint16_t height,
+                      qt::BandWindow* window) {
     DetectorBox& b = box(detector);
     if (!b.configured) return QT_BAD_CONFIG;
     b.finished = false;
@@ -191,9 +204,23 @@ qt_status qt_begin_frame(qt_detector* detector, uint16_t width, uint16_t height)
     // above its capacity before resetting its edge list, and its finish() would then run again
     // on the previous frame's edges; with no C++ call on a bad size, the `begun` guard holds.
     if (!frame_size_ok(width, height)) return QT_BAD_SIZE;
-    const qt::Status s = b.det.begin_frame(width, height, b.params);
+    const qt::Status s = b.det.begin_frame(width, height, b.params, window);
     b.begun = s == qt::Status::ok || s == qt::Status::previous_frame_incomplete;
     return to_c(s);
+}
+}  // namespace
+
+qt_status qt_begin_frame(qt_detector* detector, uint16_t width, uint16_t height) {
+    if (detector == nullptr) return QT_NULL_POINTER;
+    return begin_frame(detector, width, height, nullptr);
+}
+
+qt_status qt_begin_tracked_frame(qt_detector* detector, qt_tracker* tracker, uint16_t width,
+                                 uint16_t height) {
+    if (detector == nullptr || tracker == nullptr) return QT_NULL_POINTER;
+    TrackerBox& t = box(tracker);
+    if (!t.configured) return QT_BAD_CONFIG;
+    return begin_frame(detector, width, height, t.window);
 }
 
 qt_status qt_push_row(qt_detector* detector, const uint8_t* pixels, uint16_t length) {
@@ -271,6 +298,11 @@ qt_status qt_tracker_init(qt_tracker* tracker, const qt_config* config, uint16_t
     p.gate_angle = qt::angle_from_deg(static_cast<int32_t>(config->gate_angle_deg));
     p.gate_distance = qt::q16_16::from_int(config->gate_distance_px);
     b.tracker.set_params(p);
+    qt::TrackingModeParams mode;
+    mode.half_width = qt::q16_16::from_int(config->band_half_width_px);
+    mode.full_every = config->full_every;
+    b.mode = qt::TrackingMode(mode);
+    b.tracking_mode = config->tracking_mode == QT_TRACKING_MODE_ON;
     b.configured = true;
     return QT_OK;
 }
@@ -280,6 +312,8 @@ qt_status qt_tracker_reset(qt_tracker* tracker) {
     TrackerBox& b = box(tracker);
     if (!b.configured) return QT_BAD_CONFIG;
     b.tracker.reset();
+    b.mode.reset();
+    b.window = nullptr;
     return QT_OK;
 }
 
@@ -296,6 +330,8 @@ qt_status qt_track(qt_tracker* tracker, const qt_detector* detector, qt_tracked_
     out->state = static_cast<uint8_t>(r.state);
     out->detected = r.detected;
     out->lost_reason = static_cast<uint8_t>(t.tracker.stats().lost_reason);
+    out->banded = lines.window() != nullptr ? 1 : 0;
+    t.window = t.tracking_mode ? t.mode.plan(r) : nullptr;
     out->track_id = r.track_id;
     out->age = r.age;
     for (int i = 0; i < 4; ++i) {

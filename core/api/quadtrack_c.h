@@ -51,14 +51,13 @@ extern "C" {
 #define QT_MAX_LINES 32
 #define QT_MAX_QUADS 4
 
-/* Storage sizes, bytes: the C++ objects (BoardDetectorQvga and QuadTracker with a few flags)
- * on x86-64, AArch64 and Cortex-M4 with room to spare, about 1 KiB for the detector and 128 B
- * for the tracker; quadtrack_c.cpp static_asserts that they fit, alignment 8. The margin keeps
+/* Storage sizes, bytes: the C++ objects (BoardDetectorQvga; QuadTracker and TrackingMode, with
+ * a few flags) on x86-64, AArch64 and Cortex-M4 with room to spare; quadtrack_c.cpp static_asserts that they fit, alignment 8. The margin keeps
  * this ABI across small changes inside the C++ objects; a larger one stops the build at those
  * static_asserts, and then these constants (and every C object file using them) change
  * together. */
 #define QT_DETECTOR_BYTES 51200u /* 50 KiB */
-#define QT_TRACKER_BYTES 2176u   /* 2 KiB + 128 B */
+#define QT_TRACKER_BYTES 3072u   /* 3 KiB: the tracker and its tracking mode */
 
 /* Opaque, caller-owned objects: suitably aligned bytes. Touch only through the functions. */
 typedef struct qt_detector {
@@ -104,6 +103,13 @@ enum qt_model {
     QT_MODEL_TURN = 1   /* angle with turn rate plus an offset bent by it: fast turns */
 };
 
+/* Values of qt_config.tracking_mode (tracking_mode.h, docs/tracking.md). */
+enum qt_tracking_mode {
+    QT_TRACKING_MODE_OFF = 0, /* every frame whole */
+    QT_TRACKING_MODE_ON = 1   /* while the board is tracked, qt_begin_tracked_frame processes
+                                 the next frame only in bands around its predicted sides */
+};
+
 /* Values of qt_config.contrast: which way the board's outline is brighter. */
 enum qt_contrast {
     QT_CONTRAST_BRIGHT = 0, /* the board is brighter than its surroundings on every side */
@@ -128,15 +134,20 @@ typedef struct qt_config {
                                  pixels, 0..255 */
     uint8_t contrast;         /* enum qt_contrast, 0..2 */
     /* Tracker (read by qt_tracker_init). */
-    uint8_t model;             /* enum qt_model, 0..1 */
-    uint8_t filters;           /* QT_MODEL_PAPER: Kalman filters per side, 1..3 (3 = 3KF) */
-    uint8_t max_predicted;     /* a side may go unseen this many frames in a row before the
+    uint8_t model;              /* enum qt_model, 0..1 */
+    uint8_t filters;            /* QT_MODEL_PAPER: Kalman filters per side, 1..3 (3 = 3KF) */
+    uint8_t max_predicted;      /* a side may go unseen this many frames in a row before the
                                   track is dropped, frames, 0..254, or 255: never for that
                                   reason (off) */
-    uint16_t gate_angle_deg;   /* a detected line serves a tracked side only within this angle
+    uint16_t gate_angle_deg;    /* a detected line serves a tracked side only within this angle
                                   of its prediction, whole degrees, 0..90 */
-    uint16_t gate_distance_px; /* ... and with both ends within this distance of it, whole
+    uint16_t gate_distance_px;  /* ... and with both ends within this distance of it, whole
                                   pixels, 0..1000 */
+    uint8_t tracking_mode;      /* enum qt_tracking_mode, 0..1 */
+    uint8_t band_half_width_px; /* tracking mode: a band reaches this far either side of a
+                                   predicted side, whole pixels, 2..64 */
+    uint16_t full_every;        /* tracking mode: every full_every-th frame is whole (a side
+                                   the bands missed, another board), frames, 2..65535 */
 } qt_config;
 
 /* Fills *config with the C++ API's defaults for a width x height frame. None of the fields
@@ -196,6 +207,7 @@ typedef struct qt_tracked_quad {
                                it was predicted */
     uint8_t lost_reason; /* enum qt_track_lost: a track that ended this frame (a new one may
                                have started in the same frame: see state) */
+    uint8_t banded;      /* 1: this frame was processed in tracking mode's bands, 0: whole */
     uint32_t track_id;   /* 1, 2, ...: a new id every time a track starts; 0 with no track */
     uint32_t age;        /* frames since the track started, 0 on its first frame */
     qt_point corners[4]; /* q16.16 px, in qt_quad's order; zero when state is NONE */
@@ -213,6 +225,14 @@ qt_status qt_detector_init(qt_detector* detector, const qt_config* config);
 /* Starts a frame of width x height pixels, 1..320 x 1..240 (else QT_BAD_SIZE, no frame).
  * Clears the previous frame's results. */
 qt_status qt_begin_frame(qt_detector* detector, uint16_t width, uint16_t height);
+
+/* The same in tracking mode: the frame is processed only in the bands the tracker planned at
+ * its last qt_track (whole when tracking mode is off, with no track, after a side was
+ * predicted, and every full_every-th frame). Inside the bands the edges are the whole frame's;
+ * rows no band crosses cost next to nothing. Pass the same tracker to qt_track after
+ * qt_finish. QT_BAD_CONFIG when the tracker is not configured. */
+qt_status qt_begin_tracked_frame(qt_detector* detector, qt_tracker* tracker, uint16_t width,
+                                 uint16_t height);
 
 /* The next camera row, grey levels, `length` pixels (must equal the frame width), top to
  * bottom. */
@@ -250,11 +270,12 @@ qt_status qt_get_quad(const qt_detector* detector, uint16_t index, qt_quad* out)
 qt_status qt_tracker_init(qt_tracker* tracker, const qt_config* config, uint16_t width,
                           uint16_t height);
 
-/* Drops the current track (the next track gets a new id). */
+/* Drops the current track (the next track gets a new id; the next frame is whole). */
 qt_status qt_tracker_reset(qt_tracker* tracker);
 
 /* One frame: steps the tracker on the detector's lines and quadrangles of its last finished
- * frame (call once per frame, after qt_finish). QT_NOT_IN_FRAME when the detector has no
+ * frame (call once per frame, after qt_finish), and in tracking mode plans the next frame's
+ * bands. QT_NOT_IN_FRAME when the detector has no
  * finished frame (between qt_begin_frame and a successful qt_finish): the tracker is not
  * stepped. On any error *out (if not NULL) is zeroed: state NONE. */
 qt_status qt_track(qt_tracker* tracker, const qt_detector* detector, qt_tracked_quad* out);

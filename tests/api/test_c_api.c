@@ -241,6 +241,64 @@ static void test_track(const qt_config* cfg) {
     printf("tracked 10 frames, largest corner coordinate error %.4f px\n", worst / 65536.0);
 }
 
+/* Tracking mode: the same moving rectangle through qt_begin_tracked_frame with full_every 4.
+ * Frame 0 is whole (no track yet); after it every frame runs in the bands planned from the one
+ * before, but every fourth (frames 4 and 8: the fourth after three banded ones); the track
+ * keeps every side, and each frame's corners lie within 1 px of the truth and within 1/16 px of
+ * the whole frame's (the run without tracking mode, frame by frame). */
+static void test_tracking_mode(const qt_config* defaults) {
+    qt_config cfg = *defaults;
+    qt_point whole[10][4];
+    CHECK_STATUS(qt_detector_init(&det, &cfg), QT_OK);
+    CHECK_STATUS(qt_tracker_init(&trk, &cfg, W, H), QT_OK);
+    for (int k = 0; k < 10; ++k) {
+        qt_tracked_quad t;
+        render((rect){80 + 2 * k, 60, 239 + 2 * k, 179});
+        CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_OK); /* off: whole */
+        for (int y = 0; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
+        CHECK_STATUS(qt_finish(&det), QT_OK);
+        CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
+        CHECK(t.banded == 0);
+        for (int i = 0; i < 4; ++i) whole[k][i] = t.corners[i];
+    }
+    cfg.tracking_mode = QT_TRACKING_MODE_ON;
+    cfg.full_every = 4;
+    CHECK_STATUS(qt_detector_init(&det, &cfg), QT_OK);
+    CHECK_STATUS(qt_tracker_init(&trk, &cfg, W, H), QT_OK);
+    for (int k = 0; k < 10; ++k) {
+        const rect r = {80 + 2 * k, 60, 239 + 2 * k, 179};
+        qt_point want[4];
+        qt_tracked_quad t;
+        char what[40];
+        truth(r, want);
+        render(r);
+        CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_OK);
+        for (int y = 0; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
+        CHECK_STATUS(qt_finish(&det), QT_OK);
+        CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
+        CHECK(t.banded == (k % 4 != 0));
+        CHECK(t.track_id == 1);
+        CHECK(t.detected == 0x0F);
+        snprintf(what, sizeof what, "tracking mode, frame %d", k);
+        check_corners(t.corners, want, what, __LINE__);
+        for (int i = 0; i < 4; ++i)
+            CHECK(distance2(t.corners[i], whole[k][i]) <= (int64_t)(ONE_PX / 16) * (ONE_PX / 16));
+    }
+    /* A reset drops the bands with the track: the next frame is whole. */
+    {
+        qt_tracked_quad t;
+        CHECK_STATUS(qt_tracker_reset(&trk), QT_OK);
+        CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_OK);
+        for (int y = 0; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
+        CHECK_STATUS(qt_finish(&det), QT_OK);
+        CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
+        CHECK(t.banded == 0);
+        CHECK(t.state == QT_TRACK_STARTED && t.track_id == 2);
+    }
+    CHECK_STATUS(qt_begin_tracked_frame(NULL, &trk, W, H), QT_NULL_POINTER);
+    CHECK_STATUS(qt_begin_tracked_frame(&det, NULL, W, H), QT_NULL_POINTER);
+}
+
 /* The config's fields reach the chain: each changed value has an effect worked out from the
  * scene. */
 static void test_config_applied(const qt_config* defaults) {
@@ -310,6 +368,9 @@ static void test_config(void) {
     CHECK(cfg.max_predicted == 15);
     CHECK(cfg.gate_angle_deg == 8);
     CHECK(cfg.gate_distance_px == 12);
+    CHECK(cfg.tracking_mode == QT_TRACKING_MODE_OFF);
+    CHECK(cfg.band_half_width_px == 8);
+    CHECK(cfg.full_every == 16);
     CHECK_STATUS(qt_config_check(&cfg), QT_OK);
     qt_config_default(NULL, W, H); /* no crash */
     CHECK_STATUS(qt_config_check(NULL), QT_NULL_POINTER);
@@ -343,6 +404,10 @@ static void test_config(void) {
     BELOW(filters, 1);
     RANGE(gate_angle_deg, 0, 90);
     RANGE(gate_distance_px, 0, 1000);
+    RANGE(tracking_mode, 0, 1);
+    RANGE(band_half_width_px, 2, 64);
+    BELOW(band_half_width_px, 2);
+    BELOW(full_every, 2);
 #undef RANGE
 #undef BELOW
 
@@ -365,6 +430,7 @@ static void test_config(void) {
         CHECK_STATUS(detect_image(&det), QT_OK);
         CHECK_STATUS(qt_track(&trk, &det, &t), QT_BAD_CONFIG);
         CHECK_STATUS(qt_tracker_reset(&trk), QT_BAD_CONFIG);
+        CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_BAD_CONFIG);
         CHECK_STATUS(qt_tracker_init(&trk, &cfg, W, H), QT_OK);
         CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
         CHECK(t.state == QT_TRACK_STARTED);
@@ -505,6 +571,7 @@ int main(void) {
     test_detect(&cfg);
     test_gradient_path(&cfg);
     test_track(&cfg);
+    test_tracking_mode(&cfg);
     test_config_applied(&cfg);
     test_errors(&cfg);
     if (failures != 0) {

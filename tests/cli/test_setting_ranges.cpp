@@ -18,6 +18,7 @@
 #include "cli/target_options.h"
 #include "lines/line_detector.h"
 #include "tracking/quad_tracker.h"
+#include "tracking/tracking_mode.h"
 
 namespace {
 
@@ -110,7 +111,8 @@ TEST_CASE("Every flag's range is the one core declares, in --help and in parsing
 
 TEST_CASE("qt_config_check and quadtrack_c.h give every field the range core declares",
           "[capi][ranges]") {
-    const SettingRange contrast{"", 0, QT_CONTRAST_ANY}, model{"", 0, QT_MODEL_TURN};
+    const SettingRange contrast{"", 0, QT_CONTRAST_ANY}, model{"", 0, QT_MODEL_TURN},
+        tracking_mode{"", 0, QT_TRACKING_MODE_ON};
     const std::vector<ConfigField> fields = {
         {"edge_threshold", qt::kLineRanges.edge_threshold, 65535,
          [](qt_config& c, int64_t v) { c.edge_threshold = static_cast<uint16_t>(v); }},
@@ -131,6 +133,12 @@ TEST_CASE("qt_config_check and quadtrack_c.h give every field the range core dec
          [](qt_config& c, int64_t v) { c.gate_angle_deg = static_cast<uint16_t>(v); }},
         {"gate_distance_px", qt::kQuadTrackerRanges.gate_distance, 65535,
          [](qt_config& c, int64_t v) { c.gate_distance_px = static_cast<uint16_t>(v); }},
+        {"tracking_mode", tracking_mode, 255,
+         [](qt_config& c, int64_t v) { c.tracking_mode = static_cast<uint8_t>(v); }},
+        {"band_half_width_px", qt::kTrackingModeRanges.half_width, 255,
+         [](qt_config& c, int64_t v) { c.band_half_width_px = static_cast<uint8_t>(v); }},
+        {"full_every", qt::kTrackingModeRanges.full_every, 65535,
+         [](qt_config& c, int64_t v) { c.full_every = static_cast<uint16_t>(v); }},
     };
     const std::string header = read_file(std::string(QT_SOURCE_DIR) + "/core/api/quadtrack_c.h");
     REQUIRE(!header.empty());
