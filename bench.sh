@@ -45,7 +45,7 @@
 #                  binned as quadtrack track bins them, with each line model: corner errors while
 #                  sides are hidden and after; and a 1280x720 clip through ffmpeg and GStreamer
 #                  pipes into quadtrack track -, and OpenCV's vtest.avi (768x576) through ffmpeg
-#   target-host    the filtering-geometry paper's comparison on 15 generated airborne sequences:
+#   target-host    the Filtering and Geometry paper's comparison on 15 generated airborne sequences:
 #                  template only, filter only, homography only, fused (with and without Table
 #                  III's reset), the paper's version of each of the project's choices (D_rep,
 #                  search region, morphological detection, formulation); error tables and SVG
@@ -183,10 +183,13 @@ stream_pipes() {
 # OpenCV's vtest.avi (opencv-doc, 768x576, 10 fps) as the 384x288 grey Y4M the truth in
 # vectors/footage was marked on (ffmpeg's default bicubic scaler).
 footage_video() {
-    [ -s "$1" ] && return 0
+    [ -s "$1" ] && [ -s "${1%.y4m}.bgr" ] && return 0
     mkdir -p "$(dirname "$1")"
     ffmpeg -loglevel error -y -i /usr/share/doc/opencv-doc/examples/data/vtest.avi \
         -vf scale=384:288 -f yuv4mpegpipe -pix_fmt gray "$1"
+    # The same frames in colour, raw BGR, for OpenCV's trackers (bench_footage --colour).
+    ffmpeg -loglevel error -y -i /usr/share/doc/opencv-doc/examples/data/vtest.avi \
+        -vf scale=384:288 -f rawvideo -pix_fmt bgr24 "${1%.y4m}.bgr"
 }
 
 # Runs one bench, printing its figures.
@@ -263,7 +266,7 @@ run_bench() {
             mapfile -t truth < <(ls vectors/footage/vtest_T*.txt | grep -v '\.second\.txt$' | sort -V)
             [ "$quick" = 0 ] || truth=("${truth[0]}")  # --quick: the first walker
             "$b/bench_footage" build/host/footage/vtest_384x288.y4m --out bench_out/footage \
-                "${truth[@]}" ;;
+                --colour build/host/footage/vtest_384x288.bgr "${truth[@]}" ;;
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench 2>&1 ;;
         budgets)

@@ -52,10 +52,10 @@ extern "C" {
 #define QT_MAX_QUADS 4
 
 /* Storage sizes, bytes: the C++ objects (BoardDetectorQvga; QuadTracker and TrackingMode, with
- * a few flags) on x86-64, AArch64 and Cortex-M4 with room to spare; quadtrack_c.cpp static_asserts that they fit, alignment 8. The margin keeps
- * this ABI across small changes inside the C++ objects; a larger one stops the build at those
- * static_asserts, and then these constants (and every C object file using them) change
- * together. */
+ * a few flags) on x86-64, AArch64 and Cortex-M4 with room to spare; quadtrack_c.cpp
+ * static_asserts that they fit, alignment 8. The margin keeps this ABI across small changes
+ * inside the C++ objects; a larger one stops the build at those static_asserts, and then these
+ * constants (and every C object file using them) change together. */
 #define QT_DETECTOR_BYTES 51200u /* 50 KiB */
 #define QT_TRACKER_BYTES 3072u   /* 3 KiB: the tracker and its tracking mode */
 

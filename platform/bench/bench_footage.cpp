@@ -2,7 +2,9 @@
 // platform/scene/footage_truth.h): each target is started from its truth file's start box and
 // run to its last mark by the project's pipeline (the configuration `quadtrack target` uses)
 // and, when OpenCV's tracking module is built in, by OpenCV's CSRT and KCF trackers on the same
-// frames and boxes. The truth between marks is interpolated linearly (marks are every 5th
+// frames and boxes, with their default parameters, in colour when --colour gives the frames'
+// BGR pixels (the video is in colour; our tracker sees its grey levels), in grey otherwise; each
+// row's name says which. The truth between marks is interpolated linearly (marks are every 5th
 // frame and at each occlusion's first and last frame).
 //
 // A user's box is never exact, and a tracker that holds on one box may let go on the next: each
@@ -13,8 +15,10 @@
 // switches, frames claimed while the walker is out of the frame, occlusions followed by a wrong
 // claim and the re-acquisitions after them (defined in footage_score.h), the median time a
 // frame. A claim: ours `measured` or `reacquired`, OpenCV's update() true.
-// Usage: bench_footage VIDEO.y4m TRUTH.txt... [--radius PX] [--starts N] [--out DIR]
-//                     [--quadtrack-only] [--trace] [-- TARGET FLAGS]
+// Usage: bench_footage VIDEO.y4m TRUTH.txt... [--colour FRAMES.bgr] [--radius PX] [--starts N]
+//                     [--out DIR] [--quadtrack-only] [--trace] [-- TARGET FLAGS]
+//   --colour: the same frames as raw BGR, 3 bytes a pixel, frame after frame (ffmpeg -f rawvideo
+//   -pix_fmt bgr24), for OpenCV's trackers;
 //   --radius: default 10 px; --starts: start boxes a target, 1..5 (default 5); --out: a chart
 //   a target, DIR/error_NAME.svg (each tracker's error over the frames from the marked box, the
 //   occlusions and the frames out of view shaded); --quadtrack-only: no OpenCV rows; --trace:
@@ -94,19 +98,62 @@ std::vector<Step> run_quadtrack(const std::vector<qt::io::GreyImage>& frames, co
     return run;
 }
 
+// The colour frames, BGR, read from their raw file a frame at a time (all of them would take
+// 3 bytes a pixel of memory).
+class ColourFrames {
+public:
+    ~ColourFrames() {
+        if (f_) std::fclose(f_);
+    }
+    bool open(const std::string& path, int width, int height, size_t count, std::string& error) {
+        f_ = std::fopen(path.c_str(), "rb");
+        bytes_ = static_cast<size_t>(width) * static_cast<size_t>(height) * 3;
+        if (!f_ || std::fseek(f_, 0, SEEK_END) != 0 ||
+            static_cast<size_t>(std::ftell(f_)) != bytes_ * count) {
+            error = path + ": not " + std::to_string(count) + " BGR frames of " +
+                    std::to_string(width) + "x" + std::to_string(height);
+            return false;
+        }
+        width_ = width;
+        height_ = height;
+        return true;
+    }
+    bool is_open() const { return f_ != nullptr; }
+    // Frame k into *pixels (bytes() of them); false on a read error.
+    bool read(int k, uint8_t* pixels) const {
+        return std::fseek(f_, static_cast<long>(bytes_ * static_cast<size_t>(k)), SEEK_SET) == 0 &&
+               std::fread(pixels, 1, bytes_, f_) == bytes_;
+    }
+    size_t bytes() const { return bytes_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    std::FILE* f_ = nullptr;
+    size_t bytes_ = 0;
+    int width_ = 0, height_ = 0;
+};
+ColourFrames colour_frames;  // open when --colour was given
+
 #ifdef QT_HAVE_OPENCV_TRACKING
+// OpenCV's tracker from make(), default parameters, on the colour frames when they are open
+// and on the grey levels (as three equal channels) otherwise.
 template <class Make>
 std::vector<Step> run_opencv(const std::vector<qt::io::GreyImage>& frames, const FootageTruth& t,
                              Shift d, Make make) {
     cv::Ptr<cv::Tracker> tracker = make();
     std::vector<Step> run;
     cv::Rect box(t.box_x + d.dx, t.box_y + d.dy, t.box_w, t.box_h);
+    cv::Mat bgr(frames[0].height, frames[0].width, CV_8UC3);
     for (int k = t.start; k <= t.last_frame(); ++k) {
         const qt::io::GreyImage& f = frames[static_cast<size_t>(k)];
         cv::Mat grey(f.height, f.width, CV_8UC1, const_cast<uint8_t*>(f.row(0)));
-        cv::Mat bgr;
+        if (colour_frames.is_open() && !colour_frames.read(k, bgr.data)) {
+            std::fprintf(stderr, "bench_footage: colour frame %d unreadable\n", k);
+            std::exit(1);
+        }
         const auto t0 = std::chrono::steady_clock::now();
-        cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);  // both take 3 channels
+        if (!colour_frames.is_open()) cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);
         Step step;
         if (k == t.start) {
             tracker->init(bgr, box);
@@ -224,11 +271,11 @@ int main(int argc, char** argv) {
     double radius = 10;
     int starts = 5;
     bool tracing = false, only_ours = false;
-    std::string out_dir;
+    std::string out_dir, colour_path;
     const char* usage =
-        "usage: bench_footage VIDEO.y4m TRUTH.txt... [--radius PX] [--starts N] [--quadtrack-only] "
-        "[--trace]\n"
-        "       [--trace] [-- TARGET FLAGS]\n";
+        "usage: bench_footage VIDEO.y4m TRUTH.txt... [--colour FRAMES.bgr] [--radius PX] "
+        "[--starts N]\n"
+        "       [--out DIR] [--quadtrack-only] [--trace] [-- TARGET FLAGS]\n";
     qt::cli::TargetOptions options;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--")) {
@@ -246,6 +293,8 @@ int main(int argc, char** argv) {
             radius = std::atof(argv[++i]);
         } else if (!std::strcmp(argv[i], "--starts") && i + 1 < argc) {
             starts = std::max(1, std::min(5, std::atoi(argv[++i])));
+        } else if (!std::strcmp(argv[i], "--colour") && i + 1 < argc) {
+            colour_path = argv[++i];
         } else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) {
             out_dir = argv[++i];
         } else if (!std::strcmp(argv[i], "--quadtrack-only")) {
@@ -280,28 +329,38 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_footage: %s\n", error.c_str());
         return 1;
     }
+    if (!colour_path.empty() &&
+        (frames.empty() || !colour_frames.open(colour_path, frames[0].width, frames[0].height,
+                                               frames.size(), error))) {
+        std::fprintf(stderr, "bench_footage: %s\n", error.empty() ? "no frames" : error.c_str());
+        return 1;
+    }
+    const bool colour = colour_frames.is_open();
     // The trackers, each run from every start box of every target.
     struct Tracker {
         const char* name;
         std::vector<Step> (*run)(const std::vector<qt::io::GreyImage>&, const FootageTruth&, Shift,
                                  const qt::TargetPipelineParams&);
     };
-    std::vector<Tracker> trackers = {{"quadtrack", run_quadtrack}};
+    std::vector<Tracker> trackers = {{"quadtrack (grey)", run_quadtrack}};
 #ifdef QT_HAVE_OPENCV_TRACKING
     if (!only_ours) {
         trackers.push_back(
-            {"OpenCV CSRT", [](const std::vector<qt::io::GreyImage>& f, const FootageTruth& t,
-                               Shift d, const qt::TargetPipelineParams&) {
+            {colour ? "OpenCV CSRT (colour, defaults)" : "OpenCV CSRT (grey, defaults)",
+             [](const std::vector<qt::io::GreyImage>& f, const FootageTruth& t, Shift d,
+                const qt::TargetPipelineParams&) {
                  return run_opencv(f, t, d, [] { return cv::TrackerCSRT::create(); });
              }});
         trackers.push_back(
-            {"OpenCV KCF", [](const std::vector<qt::io::GreyImage>& f, const FootageTruth& t,
-                              Shift d, const qt::TargetPipelineParams&) {
+            {colour ? "OpenCV KCF (colour, defaults)" : "OpenCV KCF (grey, defaults)",
+             [](const std::vector<qt::io::GreyImage>& f, const FootageTruth& t, Shift d,
+                const qt::TargetPipelineParams&) {
                  return run_opencv(f, t, d, [] { return cv::TrackerKCF::create(); });
              }});
     }
 #else
     (void)only_ours;  // no OpenCV rows to leave out
+    (void)colour;
 #endif
     const Shift all_shifts[] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     std::vector<Row> rows;
