@@ -255,6 +255,17 @@ const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
                  "the image",
                  tracker.max_outside,
                  [](TargetOptions& o) -> float& { return o.config.tracker.max_outside; }),
+            integer<uint8_t>(
+                "max-unconfirmed-exit", "FRAMES",
+                "lost when the estimate leaves the image after more than this many frames "
+                "searched in vain while the camera keeps the last measured position inside",
+                tracker.max_unconfirmed_exit,
+                [](TargetOptions& o) -> uint8_t& { return o.config.tracker.max_unconfirmed_exit; }),
+            real("lost-search", "PX",
+                 "a target lost so is searched for around its last measured position, the "
+                 "window growing by this much a frame up to --max-radius (0: not searched for)",
+                 tracker.lost_search_px,
+                 [](TargetOptions& o) -> float& { return o.config.tracker.lost_search_px; }),
             integer<uint16_t>(
                 "coast-fit", "FRAMES",
                 "leaving the image, the estimate coasts on the track (--coast-track) fitted to "

@@ -1051,3 +1051,121 @@ TEST_CASE(
     CHECK(w.x == Approx(e.x + copy.update(kNone).x - e.x).margin(0.5));
     CHECK(w.radius > 0);
 }
+
+namespace {
+
+TargetMeasurement searched_in_vain() {
+    TargetMeasurement m;
+    m.searched = true;
+    return m;
+}
+
+// A target measured at (x0 - v·k, 60) for frames k = 1..5 of a 160 × 120 image with a still
+// camera: it moves v px a frame to the left, and the filter has learnt that velocity.
+TargetTracker walked_left(float x0, float v, const TargetTrackerParams& p) {
+    TargetTracker t;
+    t.init(x0, 60, 160, 120, p);
+    for (int k = 1; k <= 5; ++k) {
+        t.predict(geometry(Homography{}));
+        REQUIRE(t.update(seen(x0 - v * static_cast<float>(k), 60)).state == TargetState::measured);
+    }
+    return t;
+}
+
+// Frames of `g` with `m` until the state is no longer predicted (at most 100): the last
+// estimate.
+TargetEstimate until_not_predicted(TargetTracker& t, const FrameGeometry& g,
+                                   const TargetMeasurement& m) {
+    TargetEstimate e;
+    for (int k = 0; k < 100; ++k) {
+        t.predict(g);
+        e = t.update(m);
+        if (e.state != TargetState::predicted) break;
+    }
+    return e;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "An unconfirmed exit is lost: the target predicted out of the image by its own motion, "
+    "the camera keeping its last measured position inside",
+    "[target][lost]") {
+    TargetTrackerParams p;
+    p.max_outside = 100;  // the reach rule out of the way
+    SECTION(
+        "searched in vain, predicted out on the left: lost at the exit, reported where it was "
+        "last measured") {
+        TargetTracker t = walked_left(60, 5, p);  // last measured at x = 35
+        TargetEstimate e;
+        int frames = 0;
+        do {
+            t.predict(geometry(Homography{}));
+            e = t.update(searched_in_vain());
+            ++frames;
+        } while (e.state == TargetState::predicted && frames < 100);
+        // More than max_unconfirmed_exit (3) frames in vain before the estimate leaves: at
+        // about 5 px a frame from x = 35, the exit comes after 7 or 8 frames.
+        CHECK(frames > p.max_unconfirmed_exit);
+        CHECK(e.state == TargetState::lost);
+        CHECK(e.x == Approx(35).margin(0.01));
+        CHECK(e.y == Approx(60).margin(0.01));
+        // Lost stays lost, the position held, and with lost_search_px 0 nothing is searched.
+        const SearchWindow w = t.predict(geometry(Homography{}));
+        CHECK(w.radius == 0);
+        CHECK(t.update(seen(35, 60)).state == TargetState::lost);
+    }
+    SECTION("the rule off: out of view, as before") {
+        p.max_unconfirmed_exit = kCheckOff;
+        TargetTracker t = walked_left(60, 5, p);
+        CHECK(until_not_predicted(t, geometry(Homography{}), searched_in_vain()).state ==
+              TargetState::out_of_view);
+    }
+    SECTION("frames not searched (the template across the border) do not count") {
+        TargetTracker t = walked_left(60, 5, p);
+        CHECK(until_not_predicted(t, geometry(Homography{}), kNone).state ==
+              TargetState::out_of_view);
+    }
+    SECTION("a still target carried out by the camera: out of view, not lost") {
+        TargetTracker t = walked_left(35, 0, p);
+        // The image content moves 6 px a frame to the left: the last measured position leaves
+        // with the estimate.
+        CHECK(until_not_predicted(t, geometry(translation(-6, 0)), searched_in_vain()).state ==
+              TargetState::out_of_view);
+    }
+}
+
+TEST_CASE(
+    "A target lost by an unconfirmed exit is searched for in a growing window around its "
+    "last measured position, and a match restarts it",
+    "[target][lost]") {
+    TargetTrackerParams p;
+    p.max_outside = 100;
+    p.lost_search_px = 2;
+    TargetTracker t = walked_left(60, 5, p);
+    TargetEstimate e = until_not_predicted(t, geometry(Homography{}), searched_in_vain());
+    REQUIRE(e.state == TargetState::lost);
+    // The window: centred where it was last measured, min_radius + 2 px per lost frame, up to
+    // max_radius (4 + 2 k, k = 1, 2, ...; 24 from k = 10).
+    for (int k = 1; k <= 12; ++k) {
+        const SearchWindow w = t.predict(geometry(Homography{}));
+        CHECK(w.x == Approx(35).margin(0.01));
+        CHECK(w.y == Approx(60).margin(0.01));
+        CHECK(w.radius == Approx(k < 10 ? 4.0f + 2.0f * static_cast<float>(k) : 24.0f));
+        e = t.update(searched_in_vain());
+        CHECK(e.state == TargetState::lost);
+    }
+    // A match below min_score leaves it lost; one above restarts the filter there, with no
+    // velocity: the next window is centred on the match.
+    t.predict(geometry(Homography{}));
+    CHECK(t.update(seen(40, 62, p.min_score - 0.05f)).state == TargetState::lost);
+    t.predict(geometry(Homography{}));
+    e = t.update(seen(40, 62));
+    CHECK(e.state == TargetState::reacquired);
+    CHECK(e.x == 40);
+    CHECK(e.y == 62);
+    const SearchWindow next = t.predict(geometry(Homography{}));
+    CHECK(next.x == Approx(40).margin(1e-3));
+    CHECK(next.y == Approx(62).margin(1e-3));
+    CHECK(t.update(seen(40, 62)).state == TargetState::measured);
+}

@@ -326,6 +326,7 @@ private:
     // pixels.
     TargetMeasurement measure(TargetFrame& out) {
         TargetMeasurement m;
+        m.searched = true;
         // The window in blocks (pixels at step 1): centre and radius.
         const int32_t wx = to_blocks(out.window.x, ox_), wy = to_blocks(out.window.y, oy_);
         const uint16_t wr = static_cast<uint16_t>(

@@ -70,6 +70,11 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     last_y_ = y;
     held_x_ = x;
     held_y_ = y;
+    meas_x_ = x;
+    meas_y_ = y;
+    unconfirmed_ = 0;
+    lost_search_ = false;
+    lost_frames_ = 0;
     ref_x_ = x;
     ref_y_ = y;
     history_start_ = 0;
@@ -123,9 +128,43 @@ void TargetTracker::position(float& x, float& y) const {
     }
 }
 
+bool TargetTracker::unconfirmed_exit(float x, float y) const {
+    if (params_.method != TargetMethod::fused || paper_formulation() ||
+        params_.max_unconfirmed_exit == kCheckOff || unconfirmed_ <= params_.max_unconfirmed_exit ||
+        in_image(x, y))
+        return false;
+    float mx, my;  // the last measured position, carried by the camera into this image
+    return apply_homography(acc_, meas_x_, meas_y_, mx, my) && in_image(mx, my);
+}
+
+// The filter started again on a match at (x, y) in the current image, which becomes the
+// reference image; the camera's motion (last_h_) and the frame count go on.
+void TargetTracker::restart_on(float x, float y) {
+    kf_.init(x, y, params_.kalman);
+    acc_ = Homography{};
+    ref_x_ = meas_x_ = held_x_ = x;
+    ref_y_ = meas_y_ = held_y_ = y;
+    history_start_ = 0;
+    history_count_ = 0;
+    coasting_ = false;
+    lost_search_ = false;
+    unseen_ = 0;
+    unconfirmed_ = 0;
+    remember(x, y);
+}
+
 SearchWindow TargetTracker::predict(const FrameGeometry& g) {
     SearchWindow w;
-    if (state_ == TargetState::lost) return w;
+    if (state_ == TargetState::lost) {
+        if (!lost_search_ || params_.lost_search_px <= 0) return w;
+        if (lost_frames_ < UINT16_MAX) ++lost_frames_;
+        const float r =
+            params_.min_radius_px + params_.lost_search_px * static_cast<float>(lost_frames_);
+        w.x = lost_x_;
+        w.y = lost_y_;
+        w.radius = r < params_.max_radius_px ? r : params_.max_radius_px;
+        return w;
+    }
     ++frame_;
     switch (params_.method) {
         case TargetMethod::template_only:
@@ -273,6 +312,10 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     const float det_j = j[0] * j[3] - j[1] * j[2];
     e.det_s = gate.det_s * det_j * det_j;  // det(J S Jᵀ), px⁴ in the current image
     if (state_ == TargetState::lost) {
+        if (lost_search_ && params_.lost_search_px > 0 && found) {
+            restart_on(m.x, m.y);
+            state_ = TargetState::reacquired;
+        }
         e.x = held_x_;
         e.y = held_y_;
         e.state = state_;
@@ -300,6 +343,9 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
         coasting_ = false;
         state_ = unseen_ > 0 ? TargetState::reacquired : TargetState::measured;
         unseen_ = 0;
+        unconfirmed_ = 0;
+        meas_x_ = zx;
+        meas_y_ = zy;
         remember(zx, zy);
         if (params_.method == TargetMethod::fused && params_.reset && in.nds <= params_.reset_nds &&
             e.det_s <= params_.reset_det_s && (paper || kf_.change_frame(acc_))) {
@@ -307,10 +353,14 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
             acc_ = Homography{};  // Table III: the accumulation starts again at this frame
             ref_x_ = kf_.x();     // x_m of equation (11), m = this frame
             ref_y_ = kf_.y();
+            meas_x_ = m.x;  // the measurement in the new reference image, this one
+            meas_y_ = m.y;
             e.reset = true;
         }
     } else {
+        const bool leaving = state_ != TargetState::out_of_view;  // inside until this frame
         if (unseen_ < UINT16_MAX) ++unseen_;
+        if (m.searched && unconfirmed_ < UINT16_MAX) ++unconfirmed_;
         float x, y;
         // The paper's formulation while perturbed: x_n = A x_m (equation (11)); the filter
         // follows it (re-initialised there when the target returns).
@@ -326,6 +376,14 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
             (bad_geometry_ > params_.max_bad_geometry || !accumulation_plausible());
         if (unseen_ > params_.max_unseen || geometry_gone || !within_reach(x, y))
             state_ = TargetState::lost;
+        if (state_ != TargetState::lost && leaving && unconfirmed_exit(x, y) &&
+            apply_homography(acc_, meas_x_, meas_y_, lost_x_, lost_y_)) {
+            state_ = TargetState::lost;
+            lost_search_ = true;
+            lost_frames_ = 0;
+            held_x_ = lost_x_;  // reported while lost: where it was last seen
+            held_y_ = lost_y_;
+        }
     }
     // A lost target's estimate is the last one reported before it was lost (within reach).
     if (state_ != TargetState::lost) position(held_x_, held_y_);

@@ -32,6 +32,16 @@
 // is no longer a place to look for the target. A lost target reports the last estimate it
 // reported before it was lost.
 //
+// An unconfirmed exit is lost too (fused, reference formulation): the estimate leaves the
+// image after more than max_unconfirmed_exit frames searched in vain while the camera's motion
+// keeps the last measured position inside it — it left by its own predicted motion alone, and
+// nothing confirms that the target did (a walker who stopped behind a sign). Such a target
+// reports its last measured position, carried by the camera. With lost_search_px > 0 it is
+// searched for there in a window that grows by lost_search_px a frame up to max_radius_px, and
+// a match (NCC at least min_score) restarts the filter on it, reported as reacquired; off by
+// default: on the real footage it re-acquires look-alikes as often as the walker
+// (docs/target.md, Real footage).
+//
 // The comparison methods of the paper's §IV are modes of the same tracker (TargetMethod).
 // Float only, never double; no heap.
 #pragma once
@@ -122,6 +132,11 @@ struct TargetTrackerParams {
     // Lost when the estimate, unseen, is more than this many frame widths left or right of the
     // image (heights above or below): frames; 0 loses it as soon as it leaves the image.
     float max_outside = 1.0f;
+    // The unconfirmed-exit rule above: frames searched in vain before the exit; kCheckOff: off.
+    uint8_t max_unconfirmed_exit = 3;
+    // A target lost by that rule is searched for around its last measured position in a window
+    // growing by this many px a frame; 0: not searched for (lost stays lost until init()).
+    float lost_search_px = 0.0f;
     // Coasting out of view (fused, reference formulation): when the estimate leaves the image,
     // it follows the track fitted by least squares to the accepted measurements of the last
     // coast_fit_frames frames (at least 8 of them, in the reference image), frames;
@@ -149,6 +164,8 @@ struct TargetTrackerRanges {
     SettingRange max_unseen{"frames", 1, 65535};
     SettingRange max_outside{"frame sizes", 0, 100};
     SettingRange coast_fit_frames{"frames", 0, 63};
+    SettingRange max_unconfirmed_exit{"frames", 0, 254, 0, true};
+    SettingRange lost_search_px{"px per frame", 0, 48};
 };
 inline constexpr TargetTrackerRanges kTargetTrackerRanges{};
 
@@ -176,6 +193,7 @@ struct SearchWindow {
 
 // The best template match in the window, from the caller's template search.
 struct TargetMeasurement {
+    bool searched = false;  // a window was searched this frame (found or not)
     bool found = false;
     float x = 0, y = 0;  // matched target centre, px
     float score = 0;     // NCC, -1..1
@@ -239,6 +257,14 @@ private:
     uint16_t bad_geometry_ = 0;
     float last_x_ = 0, last_y_ = 0;  // template_only: the last match
     float held_x_ = 0, held_y_ = 0;  // the last estimate reported while not lost
+    float meas_x_ = 0, meas_y_ = 0;  // the last accepted measurement, reference image
+    uint16_t unconfirmed_ = 0;       // frames searched in vain since then
+    // Lost by an unconfirmed exit: searched for around (lost_x_, lost_y_), current image.
+    bool lost_search_ = false;
+    float lost_x_ = 0, lost_y_ = 0;
+    uint16_t lost_frames_ = 0;
+    bool unconfirmed_exit(float x, float y) const;
+    void restart_on(float x, float y);
     // The accepted measurements of the last frames, in the reference image (A⁻¹ z, carried by
     // A at each reset), oldest first from history_start_ (a ring), with their frame.
     static constexpr uint16_t kHistory = kMaxCoastFitFrames + 1;
