@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "base/floor_div.h"
 #include "target/ncc_match.h"
 
 namespace qt {
@@ -52,6 +53,13 @@ template <uint8_t MaxSide>
 TemplateHit search_template(const TargetTemplate<MaxSide>& t, const PixelRegion& region, int32_t cx,
                             int32_t cy, uint16_t radius) {
     return search_template(t.pixels, t.w, t.h, region, cx, cy, radius);
+}
+
+// t moved 1/n of the way to c, rounded to nearest (halves up): t + round((c − t) / n); c
+// itself at n <= 1. Always between t and c, so a pixel stays a pixel.
+constexpr int32_t blend_toward(int32_t t, int32_t c, int32_t n) {
+    return n <= 1 ? c
+                  : t + static_cast<int32_t>(floor_div(2 * (int64_t{c} - t) + n, 2 * int64_t{n}));
 }
 
 // Copies a w × h template whose top-left pixel is (x, y) out of the region; false (template

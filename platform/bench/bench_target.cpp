@@ -37,6 +37,7 @@ struct Variant {
     bool coast_projective = qt::TargetTrackerParams{}.coast_projective;
     bool ground_corners_only = qt::TargetPipelineParams{}.ground_corners_only;
     qt::PairSource pairs = qt::FrameHomographyParams{}.pairs;
+    uint8_t template_blend = qt::TargetPipelineParams{}.template_blend;
 };
 
 using qt::RepGate;
@@ -72,6 +73,9 @@ const Variant kVariants[] = {
     {"fused, corner pairs", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
      qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::PairSource::corners},
+    {"fused, template blend 8", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs, 8},
     {"paper form.", TargetMethod::fused, true, 20, 1, TargetFormulation::paper},
     {"paper form., no reset", TargetMethod::fused, false, 20, 1, TargetFormulation::paper},
 };
@@ -314,6 +318,7 @@ int main(int argc, char** argv) {
             config.tracker.coast_projective = kVariants[v].coast_projective;
             config.ground_corners_only = kVariants[v].ground_corners_only;
             config.geometry.pairs = kVariants[v].pairs;
+            config.template_blend = kVariants[v].template_blend;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {

@@ -243,6 +243,12 @@ const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
             real("min-score", "NCC", "a template match counts when its NCC >= this",
                  tracker.min_score,
                  [](TargetOptions& o) -> float& { return o.config.tracker.min_score; }),
+            integer<uint8_t>(
+                "template-blend", "N",
+                "1: the template is replaced by the cut at a match whose NCC fell below 0.85; "
+                "N > 1: every accepted match moves it 1/N of the way to the cut there",
+                kTargetPipelineRanges.template_blend,
+                [](TargetOptions& o) -> uint8_t& { return o.config.template_blend; }),
             real("max-radius", "PX", "largest search window half-side around the prediction",
                  tracker.max_radius_px,
                  [](TargetOptions& o) -> float& { return o.config.tracker.max_radius_px; }),

@@ -412,3 +412,24 @@ TEST_CASE("RegionCapture keeps the clipped box's rows and columns of the streame
         CHECK(cap.region().h == 0);
     }
 }
+
+TEST_CASE("blend_toward: 1/n of the way, rounded to nearest, halves up; n <= 1 replaces",
+          "[template]") {
+    // Worked by hand: 255/8 = 31.875 -> 32; -255/8 -> -32; 4/8 = 0.5 -> 1 (half up);
+    // -4/8 = -0.5 -> 0 (half up); 3/8 -> 0; 12/8 = 1.5 -> 2.
+    CHECK(qt::blend_toward(0, 255, 8) == 32);
+    CHECK(qt::blend_toward(255, 0, 8) == 223);
+    CHECK(qt::blend_toward(10, 14, 8) == 11);
+    CHECK(qt::blend_toward(14, 10, 8) == 14);
+    CHECK(qt::blend_toward(10, 13, 8) == 10);
+    CHECK(qt::blend_toward(10, 22, 8) == 12);
+    CHECK(qt::blend_toward(-300, 500, 1) == 500);
+    CHECK(qt::blend_toward(7, 9, 0) == 9);
+    // Between t and c for every pair of pixel values and n = 2..64.
+    for (int n = 2; n <= 64; n *= 2)
+        for (int t = 0; t < 256; t += 5)
+            for (int c = 0; c < 256; c += 7) {
+                const int32_t b = qt::blend_toward(t, c, n);
+                CHECK((t <= c ? (b >= t && b <= c) : (b <= t && b >= c)));
+            }
+}

@@ -45,6 +45,13 @@ struct TargetPipelineParams {
     // let the sub-pixel errors of successive cuts add up to a drift. 0: never. template_only
     // refreshes at every match, as the paper's template tracker does (its Fig. 8).
     int32_t refresh_score_q15 = 27853;
+    // 1 (default): the template is replaced by the cut at a match whose NCC fell below
+    // refresh_score_q15. N > 1: every accepted match moves it 1/N of the way to the cut there
+    // (pixels and centre offset, blend_toward): a running mean of the target's look over about N
+    // frames, which one partly occluded cut cannot take over. On the real footage it keeps
+    // walkers better; on the generated airborne sequences it lags the changed look of a target
+    // coming back into view (docs/target.md). template_only replaces at every match (Fig. 8).
+    uint8_t template_blend = 1;
     TargetDetector detector = TargetDetector::ncc_template;
     // The frame homography leaves out the previous frame's corners whose patch reaches the
     // target's box (around the last estimate, grown by kTargetBoxSlackPx): the target moves on
@@ -54,6 +61,12 @@ struct TargetPipelineParams {
     bool ground_corners_only = true;
     uint8_t morph_min_contrast = 12;  // morphological: a detection's top-hat, grey levels
 };
+
+// TargetPipelineParams' ranges (base/setting_range.h).
+struct TargetPipelineRanges {
+    SettingRange template_blend{"", 1, 64};
+};
+inline constexpr TargetPipelineRanges kTargetPipelineRanges{};
 
 inline const char* target_detector_name(TargetDetector d) {
     return d == TargetDetector::morphological ? "morphological" : "ncc_template";
@@ -316,9 +329,12 @@ private:
         const bool accepted = out.estimate.state == TargetState::measured ||
                               out.estimate.state == TargetState::reacquired;
         const bool every = params_.tracker.method == TargetMethod::template_only;
+        const bool blend = params_.template_blend > 1 && !every;
         if (accepted && params_.detector == TargetDetector::ncc_template &&
-            (every || out.hit.score_q15 < params_.refresh_score_q15) && grid_was_aligned(m))
-            refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_);
+            (every || blend || out.hit.score_q15 < params_.refresh_score_q15) &&
+            grid_was_aligned(m))
+            refresh_template(out.hit.x_q8 + offset_x_q8_, out.hit.y_q8 + offset_y_q8_,
+                             blend ? params_.template_blend : 1);
         mark(TargetStage::refresh);
     }
 
@@ -390,19 +406,24 @@ private:
     // (x_q8, y_q8) (1/256 px) and keeps the remainder as the centre's offset from the template's
     // centre. Nothing changes when the template would leave the captured region.
     // (In blocks at a step above 1: the centre nearest in blocks, the offset in frame px.)
-    void refresh_template(int32_t x_q8, int32_t y_q8) {
+    void refresh_template(int32_t x_q8, int32_t y_q8, uint8_t blend) {
         const int32_t w = template_.w, h = template_.h;
         const int32_t bx_q8 = static_cast<int32_t>(from_frame_q8(x_q8, ox_)),
                       by_q8 = static_cast<int32_t>(from_frame_q8(y_q8, oy_));
         // Top-left so that the template centre tl + (w − 1)/2 is nearest the target centre.
         const int32_t left = static_cast<int32_t>(floor_div(bx_q8 - (w - 1) * 128 + 128, 256));
         const int32_t top = static_cast<int32_t>(floor_div(by_q8 - (h - 1) * 128 + 128, 256));
-        if (!cut_template(capture_.region(), left, top, template_.w, template_.h, template_))
-            return;
-        offset_x_q8_ =
+        TargetTemplate<MaxTemplate> cut;
+        if (!cut_template(capture_.region(), left, top, template_.w, template_.h, cut)) return;
+        const int32_t cut_x_q8 =
             static_cast<int32_t>(x_q8 - to_frame_q8(int64_t{left} * 256 + (w - 1) * 128, ox_));
-        offset_y_q8_ =
+        const int32_t cut_y_q8 =
             static_cast<int32_t>(y_q8 - to_frame_q8(int64_t{top} * 256 + (h - 1) * 128, oy_));
+        for (int32_t i = 0; i < w * h; ++i)
+            template_.pixels[i] =
+                static_cast<uint8_t>(blend_toward(template_.pixels[i], cut.pixels[i], blend));
+        offset_x_q8_ = blend_toward(offset_x_q8_, cut_x_q8, blend);
+        offset_y_q8_ = blend_toward(offset_y_q8_, cut_y_q8, blend);
     }
     // At a step above 1, whether the target was found within a quarter block of where the grid
     // was placed for it: only then do its blocks hold the template's pixels, so that a template
