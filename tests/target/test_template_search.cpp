@@ -413,7 +413,7 @@ TEST_CASE("RegionCapture keeps the clipped box's rows and columns of the streame
     }
 }
 
-TEST_CASE("blend_toward: 1/n of the way, rounded to nearest, halves up; n <= 1 replaces",
+TEST_CASE("blend_toward: 1/n of the way, rounded to nearest, halves up, and n <= 1 replaces",
           "[template]") {
     // Worked by hand: 255/8 = 31.875 -> 32; -255/8 -> -32; 4/8 = 0.5 -> 1 (half up);
     // -4/8 = -0.5 -> 0 (half up); 3/8 -> 0; 12/8 = 1.5 -> 2.
