@@ -23,13 +23,13 @@
 //
 // States, per frame: measured (a measurement accepted), reacquired (the first accepted after
 // frames without one), predicted (none accepted; the target's estimated position is inside
-// the image), out_of_view (none accepted; outside the image), lost (terminal until init(): no
-// measurement for more than max_unseen frames, or more than max_bad_geometry consecutive
-// frames without a trustworthy homography while unseen, or A no longer a plausible camera
-// motion: it sends the estimate to infinity, or scales the area around it by a factor outside
-// [1/max_scale², max_scale²] — then A's position is not worth reporting — or the estimate more
-// than max_outside frame widths (heights) outside the image: a coasting estimate that far out
-// is no longer a place to look for the target. A lost target reports the last estimate it
+// the image), out_of_view (none accepted; outside the image), lost (until init(), or the lost
+// search below: no measurement for more than max_unseen frames, or more than max_bad_geometry
+// consecutive frames without a trustworthy homography while unseen, or A no longer a plausible
+// camera motion: it sends the estimate to infinity, or scales the area around it by a factor
+// outside [1/max_scale², max_scale²] — then A's position is not worth reporting — or the
+// estimate more than max_outside frame widths (heights) outside the image: a coasting estimate
+// that far out is no longer a place to look for the target. A lost target reports the last estimate it
 // reported before it was lost.
 //
 // An unconfirmed exit is lost too (fused, reference formulation): the estimate leaves the
