@@ -29,8 +29,8 @@
 // camera motion: it sends the estimate to infinity, or scales the area around it by a factor
 // outside [1/max_scale², max_scale²] — then A's position is not worth reporting — or the
 // estimate more than max_outside frame widths (heights) outside the image: a coasting estimate
-// that far out is no longer a place to look for the target. A lost target reports the last estimate it
-// reported before it was lost.
+// that far out is no longer a place to look for the target. A lost target reports the last
+// estimate it reported before it was lost.
 //
 // An unconfirmed exit is lost too (fused, reference formulation): the estimate leaves the
 // image after more than max_unconfirmed_exit frames searched in vain while the camera's motion
