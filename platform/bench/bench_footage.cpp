@@ -114,24 +114,18 @@ public:
                     std::to_string(width) + "x" + std::to_string(height);
             return false;
         }
-        width_ = width;
-        height_ = height;
         return true;
     }
     bool is_open() const { return f_ != nullptr; }
-    // Frame k into *pixels (bytes() of them); false on a read error.
+    // Frame k into *pixels (width · height · 3 bytes); false on a read error.
     bool read(int k, uint8_t* pixels) const {
         return std::fseek(f_, static_cast<long>(bytes_ * static_cast<size_t>(k)), SEEK_SET) == 0 &&
                std::fread(pixels, 1, bytes_, f_) == bytes_;
     }
-    size_t bytes() const { return bytes_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
 
 private:
     std::FILE* f_ = nullptr;
     size_t bytes_ = 0;
-    int width_ = 0, height_ = 0;
 };
 ColourFrames colour_frames;  // open when --colour was given
 
@@ -147,13 +141,14 @@ std::vector<Step> run_opencv(const std::vector<qt::io::GreyImage>& frames, const
     cv::Mat bgr(frames[0].height, frames[0].width, CV_8UC3);
     for (int k = t.start; k <= t.last_frame(); ++k) {
         const qt::io::GreyImage& f = frames[static_cast<size_t>(k)];
-        cv::Mat grey(f.height, f.width, CV_8UC1, const_cast<uint8_t*>(f.row(0)));
         if (colour_frames.is_open() && !colour_frames.read(k, bgr.data)) {
             std::fprintf(stderr, "bench_footage: colour frame %d unreadable\n", k);
             std::exit(1);
         }
         const auto t0 = std::chrono::steady_clock::now();
-        if (!colour_frames.is_open()) cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);
+        if (!colour_frames.is_open())  // the grey conversion timed, as it was before
+            cv::cvtColor(cv::Mat(f.height, f.width, CV_8UC1, const_cast<uint8_t*>(f.row(0))), bgr,
+                         cv::COLOR_GRAY2BGR);
         Step step;
         if (k == t.start) {
             tracker->init(bgr, box);
