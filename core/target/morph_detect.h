@@ -55,10 +55,8 @@ public:
                           Polarity polarity, const MorphParams& p) {
         MorphDetection out;
         const int32_t e = p.element < 3 ? 3 : p.element > 63 ? 63 : p.element;
-        if (!load_window(region, cx, cy, static_cast<int32_t>(radius) + e / 2 + 1)) return out;
-        const uint8_t* src = region.pixels +
-                             static_cast<uint32_t>(wy0_ - region.y0) * region.stride +
-                             static_cast<uint32_t>(wx0_ - region.x0);
+        const uint8_t* src = load_window(region, cx, cy, static_cast<int32_t>(radius) + e / 2 + 1);
+        if (src == nullptr) return out;
         // Opening = dilate(erode(I)); closing = erode(dilate(I)).
         const bool bright = polarity == Polarity::bright;
         filter(e, bright);   // erode for the opening, dilate for the closing
@@ -73,8 +71,9 @@ public:
 
 private:
     // Copies the window of centres within ±reach px of (cx, cy), clipped to the region and to
-    // MaxW × MaxH, into buf_; false when nothing is left.
-    bool load_window(const PixelRegion& region, int32_t cx, int32_t cy, int32_t reach) {
+    // MaxW × MaxH, into buf_; returns the window's first pixel in the region, or null when
+    // nothing is left.
+    const uint8_t* load_window(const PixelRegion& region, int32_t cx, int32_t cy, int32_t reach) {
         int64_t x0 = int64_t{cx} - reach, y0 = int64_t{cy} - reach;
         int64_t x1 = int64_t{cx} + reach + 1, y1 = int64_t{cy} + reach + 1;  // exclusive
         if (x0 < region.x0) x0 = region.x0;
@@ -83,7 +82,7 @@ private:
         if (y1 > int64_t{region.y0} + region.h) y1 = int64_t{region.y0} + region.h;
         if (x1 - x0 > MaxW) x1 = x0 + MaxW;
         if (y1 - y0 > MaxH) y1 = y0 + MaxH;
-        if (x1 <= x0 || y1 <= y0 || region.pixels == nullptr) return false;
+        if (x1 <= x0 || y1 <= y0 || region.pixels == nullptr) return nullptr;
         wx0_ = static_cast<int32_t>(x0);
         wy0_ = static_cast<int32_t>(y0);
         w_ = static_cast<int32_t>(x1 - x0);
@@ -95,7 +94,7 @@ private:
             for (int32_t x = 0; x < w_; ++x)
                 buf_[y * MaxW + x] =
                     src[static_cast<uint32_t>(y) * region.stride + static_cast<uint32_t>(x)];
-        return true;
+        return src;
     }
 
     int32_t tophat_peak(const uint8_t* src, uint32_t stride, bool bright) const {

@@ -73,7 +73,7 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     meas_x_ = x;
     meas_y_ = y;
     unconfirmed_ = 0;
-    lost_search_ = false;
+    lost_by_exit_ = false;
     lost_frames_ = 0;
     ref_x_ = x;
     ref_y_ = y;
@@ -128,13 +128,16 @@ void TargetTracker::position(float& x, float& y) const {
     }
 }
 
-bool TargetTracker::unconfirmed_exit(float x, float y) const {
+bool TargetTracker::unconfirmed_exit(float x, float y, float& mx, float& my) const {
     if (params_.method != TargetMethod::fused || paper_formulation() ||
         params_.max_unconfirmed_exit == kCheckOff || unconfirmed_ <= params_.max_unconfirmed_exit ||
         in_image(x, y))
         return false;
-    float mx, my;  // the last measured position, carried by the camera into this image
     return apply_homography(acc_, meas_x_, meas_y_, mx, my) && in_image(mx, my);
+}
+
+bool TargetTracker::searching_lost() const {
+    return state_ == TargetState::lost && lost_by_exit_ && params_.lost_search_px > 0;
 }
 
 // The filter started again on a match at (x, y) in the current image, which becomes the
@@ -147,7 +150,7 @@ void TargetTracker::restart_on(float x, float y) {
     history_start_ = 0;
     history_count_ = 0;
     coasting_ = false;
-    lost_search_ = false;
+    lost_by_exit_ = false;
     unseen_ = 0;
     unconfirmed_ = 0;
     remember(x, y);
@@ -156,7 +159,7 @@ void TargetTracker::restart_on(float x, float y) {
 SearchWindow TargetTracker::predict(const FrameGeometry& g) {
     SearchWindow w;
     if (state_ == TargetState::lost) {
-        if (!lost_search_ || params_.lost_search_px <= 0) return w;
+        if (!searching_lost()) return w;
         if (lost_frames_ < UINT16_MAX) ++lost_frames_;
         const float r =
             params_.min_radius_px + params_.lost_search_px * static_cast<float>(lost_frames_);
@@ -312,7 +315,7 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     const float det_j = j[0] * j[3] - j[1] * j[2];
     e.det_s = gate.det_s * det_j * det_j;  // det(J S Jᵀ), px⁴ in the current image
     if (state_ == TargetState::lost) {
-        if (lost_search_ && params_.lost_search_px > 0 && found) {
+        if (searching_lost() && found) {
             restart_on(m.x, m.y);
             state_ = TargetState::reacquired;
         }
@@ -376,13 +379,13 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
             (bad_geometry_ > params_.max_bad_geometry || !accumulation_plausible());
         if (unseen_ > params_.max_unseen || geometry_gone || !within_reach(x, y))
             state_ = TargetState::lost;
-        if (state_ != TargetState::lost && leaving && unconfirmed_exit(x, y) &&
-            apply_homography(acc_, meas_x_, meas_y_, lost_x_, lost_y_)) {
+        float mx, my;
+        if (state_ != TargetState::lost && leaving && unconfirmed_exit(x, y, mx, my)) {
             state_ = TargetState::lost;
-            lost_search_ = true;
+            lost_by_exit_ = true;
             lost_frames_ = 0;
-            held_x_ = lost_x_;  // reported while lost: where it was last seen
-            held_y_ = lost_y_;
+            lost_x_ = held_x_ = mx;  // reported while lost: where it was last seen
+            lost_y_ = held_y_ = my;
         }
     }
     // A lost target's estimate is the last one reported before it was lost (within reach).

@@ -259,11 +259,14 @@ private:
     float held_x_ = 0, held_y_ = 0;  // the last estimate reported while not lost
     float meas_x_ = 0, meas_y_ = 0;  // the last accepted measurement, reference image
     uint16_t unconfirmed_ = 0;       // frames searched in vain since then
-    // Lost by an unconfirmed exit: searched for around (lost_x_, lost_y_), current image.
-    bool lost_search_ = false;
+    // Lost by an unconfirmed exit at (lost_x_, lost_y_), current image: searched for there.
+    bool lost_by_exit_ = false;
     float lost_x_ = 0, lost_y_ = 0;
-    uint16_t lost_frames_ = 0;
-    bool unconfirmed_exit(float x, float y) const;
+    uint16_t lost_frames_ = 0;  // frames lost so, for the search window's growth
+    // Whether the estimate (x, y), unseen, leaves the image unconfirmed; (mx, my) the last
+    // measured position carried into this image.
+    bool unconfirmed_exit(float x, float y, float& mx, float& my) const;
+    bool searching_lost() const;
     void restart_on(float x, float y);
     // The accepted measurements of the last frames, in the reference image (A⁻¹ z, carried by
     // A at each reset), oldest first from history_start_ (a ring), with their frame.
