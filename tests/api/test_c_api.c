@@ -121,6 +121,17 @@ static qt_status detect_image(qt_detector* det) {
 static qt_detector det;
 static qt_tracker trk;
 
+/* The image in tracking mode: begun in the bands the tracker planned, then tracked. */
+static void track_in_bands(qt_tracked_quad* t) {
+    CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_OK);
+    for (int y = 0; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
+    CHECK_STATUS(qt_finish(&det), QT_OK);
+    CHECK_STATUS(qt_track(&trk, &det, t), QT_OK);
+}
+
+/* The rectangle of the tracking tests in frame k: 160 x 120 px, moving 2 px right a frame. */
+static rect moving_rect(int k) { return (rect){80 + 2 * k, 60, 239 + 2 * k, 179}; }
+
 /* The hand-worked frame through the camera path: four lines, one quadrangle, corners and
  * sides as worked out at the top. */
 static void test_detect(const qt_config* cfg) {
@@ -214,7 +225,7 @@ static void test_track(const qt_config* cfg) {
     CHECK_STATUS(qt_detector_init(&det, cfg), QT_OK);
     CHECK_STATUS(qt_tracker_init(&trk, cfg, W, H), QT_OK);
     for (int k = 0; k < 10; ++k) {
-        const rect r = {80 + 2 * k, 60, 239 + 2 * k, 179};
+        const rect r = moving_rect(k);
         qt_point want[4];
         qt_tracked_quad t;
         char what[40];
@@ -253,11 +264,8 @@ static void test_tracking_mode(const qt_config* defaults) {
     CHECK_STATUS(qt_tracker_init(&trk, &cfg, W, H), QT_OK);
     for (int k = 0; k < 10; ++k) {
         qt_tracked_quad t;
-        render((rect){80 + 2 * k, 60, 239 + 2 * k, 179});
-        CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_OK); /* off: whole */
-        for (int y = 0; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
-        CHECK_STATUS(qt_finish(&det), QT_OK);
-        CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
+        render(moving_rect(k));
+        track_in_bands(&t); /* tracking mode off: every frame whole */
         CHECK(t.banded == 0);
         for (int i = 0; i < 4; ++i) whole[k][i] = t.corners[i];
     }
@@ -266,16 +274,13 @@ static void test_tracking_mode(const qt_config* defaults) {
     CHECK_STATUS(qt_detector_init(&det, &cfg), QT_OK);
     CHECK_STATUS(qt_tracker_init(&trk, &cfg, W, H), QT_OK);
     for (int k = 0; k < 10; ++k) {
-        const rect r = {80 + 2 * k, 60, 239 + 2 * k, 179};
+        const rect r = moving_rect(k);
         qt_point want[4];
         qt_tracked_quad t;
         char what[40];
         truth(r, want);
         render(r);
-        CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_OK);
-        for (int y = 0; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
-        CHECK_STATUS(qt_finish(&det), QT_OK);
-        CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
+        track_in_bands(&t);
         CHECK(t.banded == (k % 4 != 0));
         CHECK(t.track_id == 1);
         CHECK(t.detected == 0x0F);
@@ -288,10 +293,7 @@ static void test_tracking_mode(const qt_config* defaults) {
     {
         qt_tracked_quad t;
         CHECK_STATUS(qt_tracker_reset(&trk), QT_OK);
-        CHECK_STATUS(qt_begin_tracked_frame(&det, &trk, W, H), QT_OK);
-        for (int y = 0; y < H; ++y) CHECK_STATUS(qt_push_row(&det, image[y], W), QT_OK);
-        CHECK_STATUS(qt_finish(&det), QT_OK);
-        CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
+        track_in_bands(&t);
         CHECK(t.banded == 0);
         CHECK(t.state == QT_TRACK_STARTED && t.track_id == 2);
     }
@@ -343,7 +345,7 @@ static void test_config_applied(const qt_config* defaults) {
     CHECK_STATUS(qt_detector_init(&det, &cfg), QT_OK);
     CHECK_STATUS(qt_tracker_init(&trk, &cfg, W, H), QT_OK);
     for (int k = 0; k < 2; ++k) {
-        const rect moved = {80 + 2 * k, 60, 239 + 2 * k, 179};
+        const rect moved = moving_rect(k);
         qt_tracked_quad t;
         render(moved);
         CHECK_STATUS(detect_image(&det), QT_OK);
