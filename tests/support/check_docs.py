@@ -7,6 +7,7 @@ outside it.
 
     check_docs.py ROOT      exit 0 when the docs hold to this, 1 with each offence on stdout
 """
+import functools
 import os
 import re
 import sys
@@ -24,6 +25,7 @@ def anchor(heading):
     return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
 
 
+@functools.lru_cache(maxsize=None)
 def anchors(path):
     with open(path, encoding="utf-8") as f:
         return {anchor(m.group(1)) for m in re.finditer(r"(?m)^#+ (.*)$", f.read())}
