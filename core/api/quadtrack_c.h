@@ -137,12 +137,12 @@ typedef struct qt_config {
     uint8_t model;              /* enum qt_model, 0..1 */
     uint8_t filters;            /* QT_MODEL_PAPER: Kalman filters per side, 1..3 (3 = 3KF) */
     uint8_t max_predicted;      /* a side may go unseen this many frames in a row before the
-                                  track is dropped, frames, 0..254, or 255: never for that
-                                  reason (off) */
-    uint16_t gate_angle_deg;    /* a detected line serves a tracked side only within this angle
-                                  of its prediction, whole degrees, 0..90 */
+                                   track is dropped, frames, 0..254, or 255: never for that
+                                   reason (off) */
+    uint16_t gate_angle_deg;    /* a detected line serves a tracked side only within this
+                                   angle of its prediction, whole degrees, 0..90 */
     uint16_t gate_distance_px;  /* ... and with both ends within this distance of it, whole
-                                  pixels, 0..1000 */
+                                   pixels, 0..1000 */
     uint8_t tracking_mode;      /* enum qt_tracking_mode, 0..1 */
     uint8_t band_half_width_px; /* tracking mode: a band reaches this far either side of a
                                    predicted side, whole pixels, 2..64 */
@@ -275,9 +275,9 @@ qt_status qt_tracker_reset(qt_tracker* tracker);
 
 /* One frame: steps the tracker on the detector's lines and quadrangles of its last finished
  * frame (call once per frame, after qt_finish), and in tracking mode plans the next frame's
- * bands. QT_NOT_IN_FRAME when the detector has no
- * finished frame (between qt_begin_frame and a successful qt_finish): the tracker is not
- * stepped. On any error *out (if not NULL) is zeroed: state NONE. */
+ * bands. QT_NOT_IN_FRAME when the detector has no finished frame (between qt_begin_frame and a
+ * successful qt_finish): the tracker is not stepped. On any error *out (if not NULL) is zeroed:
+ * state NONE. */
 qt_status qt_track(qt_tracker* tracker, const qt_detector* detector, qt_tracked_quad* out);
 
 /* Name of a qt_track_lost reason ("side_unseen", "shape", "saturated",
