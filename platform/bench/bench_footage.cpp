@@ -420,6 +420,10 @@ int main(int argc, char** argv) {
         "\nquadtrack: occlusions followed by a wrong claim before the target was re-acquired: "
         "%d of %d (aim 0): %s\n",
         ours.wrong_after, ours.occlusions, ours.wrong_after == 0 ? "met" : "NOT met");
+    std::printf(
+        "quadtrack: frames giving a position more than a frame width (height) outside the image "
+        "while the walker is in it: %d (aim 0): %s\n",
+        ours.far_outside, ours.far_outside == 0 ? "met" : "NOT met");
     if (trackers.size() > 1) {
         std::string kept;
         for (const std::string& n : csrt_kept) kept += (kept.empty() ? "" : ", ") + n;
@@ -434,6 +438,11 @@ int main(int argc, char** argv) {
             "frames within %.0f px: quadtrack %.1f %%, CSRT %.1f %% (aim: at least CSRT's): "
             "%s\n",
             radius, a, b, a >= b ? "met" : "NOT met");
+        const double ta = median(ours.times), tb = median(totals[1].times);
+        std::printf(
+            "time per frame, median: quadtrack %.2f ms, CSRT %.2f ms (aim: at most a "
+            "fifth of CSRT's): %s\n",
+            ta, tb, 5 * ta <= tb ? "met" : "NOT met");
     }
     return 0;
 }

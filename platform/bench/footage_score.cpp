@@ -38,6 +38,9 @@ Score score(const std::vector<Step>& run, const scene::FootageTruth& t, double r
         if (st.claims && !present && seen == Seen::out) ++s.claims_out;
         if (present) {
             ++s.frames;
+            if (st.tracking && (st.x < -t.width || st.x > 2.0 * t.width - 1 || st.y < -t.height ||
+                                st.y > 2.0 * t.height - 1))
+                ++s.far_outside;
             errors.push_back(error);
             if (error <= radius) ++s.within;
         }

@@ -28,6 +28,8 @@ struct Score {
     int within = 0;       // ... with the estimate within the radius
     int switches = 0;     // runs of wrong claims while the walker is in view
     int claims_out = 0;   // frames claiming a measurement while the walker is out of the frame
+    int far_outside = 0;  // frames with the walker in the frame and a position given more than
+                          // one frame width (height) outside the image
     int occlusions = 0;   // occlusions (runs of occluded frames) inside the span
     int reacquired = 0;   // ... after which a claim within the radius came
     int wrong_after = 0;  // ... with a wrong claim between its start and the re-acquisition
@@ -41,6 +43,7 @@ struct Score {
         within += o.within;
         switches += o.switches;
         claims_out += o.claims_out;
+        far_outside += o.far_outside;
         occlusions += o.occlusions;
         reacquired += o.reacquired;
         wrong_after += o.wrong_after;
@@ -59,7 +62,9 @@ struct Score {
 //    marks); within: those with the estimate within the radius; errors: their errors (a frame
 //    without a position: infinite);
 //  - switches: runs of frames that claim a measurement more than 2·radius from the walker in
-//    view; claims_out: frames claiming one while it is out of the frame;
+//    view; claims_out: frames claiming one while it is out of the frame; far_outside: frames
+//    with the walker in the frame and a position more than one frame width (height) outside
+//    the image (t.width × t.height);
 //  - occlusions: runs of occluded frames; wrong_after: those followed, from their first frame
 //    until the re-acquisition, by a wrong claim; reacquired: those after which a claim within
 //    the radius came once the walker was visible again, reacquire_frames: frames from the

@@ -85,3 +85,42 @@ TEST_CASE("footage score: within, switches, claims while out, an occlusion and i
     CHECK(qt::bench::median({1, 2, 3, 10}) == 2.5);
     CHECK(std::isnan(qt::bench::median({})));
 }
+
+TEST_CASE("footage score: positions more than a frame width or height outside the image",
+          "[footage]") {
+    // A 384 × 288 frame; the walker in it in frames 0..3, out from 4. Outside by more than a
+    // frame width: x < -384 or x > 767 (the last pixel, 383, plus 384); by a height: y < -288
+    // or y > 575.
+    qt::test::TempDir d;
+    const std::string path = (d.dir / "w.txt").string();
+    std::ofstream(path) << "target w\nvideo v.avi 384x288\nstart 0 94 80 13 41\n"
+                           "0 100 100 13 41 visible\n3 103 100 13 41 visible\n"
+                           "4 - - - - out\n6 - - - - out\n";
+    qt::scene::FootageTruth t;
+    std::string error;
+    REQUIRE(qt::scene::read_footage_truth(path, t, error));
+    struct F {
+        bool tracking;
+        double x, y;
+    };
+    const F frames[] = {
+        {true, 100, 100},   // 0: the start, not scored
+        {true, -384, 100},  // 1: one frame width outside exactly: not counted
+        {true, -385, 100},  // 2: more than a width: counted
+        {true, 100, 576},   // 3: more than a height below: counted
+        {true, 900, 100},   // 4: far, but the walker is out of the frame
+        {false, 900, 100},  // 5: no position given
+        {true, 767, -288},  // 6: on both limits: not counted (and the walker is out)
+    };
+    std::vector<Step> run;
+    for (const F& f : frames) {
+        Step s;
+        s.tracking = f.tracking;
+        s.x = f.x;
+        s.y = f.y;
+        run.push_back(s);
+    }
+    const Score s = qt::bench::score(run, t, 10);
+    CHECK(s.frames == 3);
+    CHECK(s.far_outside == 2);
+}
