@@ -180,16 +180,32 @@ stream_pipes() {
     rm -rf "$d"
 }
 
-# OpenCV's vtest.avi (opencv-doc, 768x576, 10 fps) as the 384x288 grey Y4M the truth in
-# vectors/footage was marked on (ffmpeg's default bicubic scaler).
+# footage_video SOURCE OUT.y4m [FILTER]: a video as the grey Y4M its truth in vectors/footage was
+# marked on (FILTER: ffmpeg's -vf, e.g. scale=384:288 with its default bicubic scaler), and the
+# same frames in colour, raw BGR, beside it for OpenCV's trackers (bench_footage --colour).
 footage_video() {
-    [ -s "$1" ] && [ -s "${1%.y4m}.bgr" ] && return 0
-    mkdir -p "$(dirname "$1")"
-    ffmpeg -loglevel error -y -i /usr/share/doc/opencv-doc/examples/data/vtest.avi \
-        -vf scale=384:288 -f yuv4mpegpipe -pix_fmt gray "$1"
-    # The same frames in colour, raw BGR, for OpenCV's trackers (bench_footage --colour).
-    ffmpeg -loglevel error -y -i /usr/share/doc/opencv-doc/examples/data/vtest.avi \
-        -vf scale=384:288 -f rawvideo -pix_fmt bgr24 "${1%.y4m}.bgr"
+    [ -s "$2" ] && [ -s "${2%.y4m}.bgr" ] && return 0
+    mkdir -p "$(dirname "$2")"
+    local vf=()
+    [ -z "${3:-}" ] || vf=(-vf "$3")
+    ffmpeg -loglevel error -y -i "$1" "${vf[@]}" -f yuv4mpegpipe -pix_fmt gray "$2"
+    ffmpeg -loglevel error -y -i "$1" "${vf[@]}" -f rawvideo -pix_fmt bgr24 "${2%.y4m}.bgr"
+}
+
+# package_file PACKAGE PATH OUT: one file of a Debian package, fetched with apt-get download and
+# unpacked without installing the package (node-opencv's dependencies are a Node.js runtime the
+# bench never runs).
+package_file() {
+    [ -s "$3" ] && return 0
+    local d
+    d=$(mktemp -d)
+    (cd "$d" && apt-get download -q "$1" >/dev/null 2>&1) || {
+        apt-get update -q >/dev/null && (cd "$d" && apt-get download -q "$1" >/dev/null)
+    }
+    dpkg-deb -x "$d"/"$1"_*.deb "$d/x"
+    mkdir -p "$(dirname "$3")"
+    cp "$d/x/$2" "$3"
+    rm -rf "$d"
 }
 
 # Runs one bench, printing its figures.
@@ -260,13 +276,21 @@ run_bench() {
         footage-host)
             ensure_packages opencv-doc ffmpeg
             host_build bench_footage
-            footage_video build/host/footage/vtest_384x288.y4m
+            local f=build/host/footage
+            footage_video /usr/share/doc/opencv-doc/examples/data/vtest.avi \
+                "$f/vtest_384x288.y4m" scale=384:288
+            package_file node-opencv usr/share/doc/node-opencv/examples/files/motion.mov \
+                "$f/motion.mov"
+            footage_video "$f/motion.mov" "$f/motion.y4m"
             rm -rf bench_out/footage && mkdir -p bench_out/footage
             local truth
             mapfile -t truth < <(ls vectors/footage/vtest_T*.txt | grep -v '\.second\.txt$' | sort -V)
             [ "$quick" = 0 ] || truth=("${truth[0]}")  # --quick: the first walker
-            "$b/bench_footage" build/host/footage/vtest_384x288.y4m --out bench_out/footage \
-                --colour build/host/footage/vtest_384x288.bgr "${truth[@]}" ;;
+            "$b/bench_footage" "$f/vtest_384x288.y4m" --out bench_out/footage \
+                --colour "$f/vtest_384x288.bgr" "${truth[@]}"
+            echo
+            "$b/bench_footage" "$f/motion.y4m" --out bench_out/footage \
+                --colour "$f/motion.bgr" vectors/footage/motion_coin.txt ;;
         gradient-m4)
             run_firmware cortex-m4 mps2-an386 gradient_bench 2>&1 ;;
         budgets)

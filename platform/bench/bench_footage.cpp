@@ -188,7 +188,7 @@ bool plot_errors(const std::string& path, const FootageTruth& t,
                  const std::vector<const char*>& names, const std::vector<std::vector<Step>>& runs,
                  double radius) {
     qt::io::LinePlot plot;
-    plot.title = "walker " + t.name + " in " + t.video + ": error from the marked box (" +
+    plot.title = "target " + t.name + " in " + t.video + ": error from the marked box (" +
                  std::to_string(static_cast<int>(radius)) + " px: 'within')";
     plot.x_label = "frame";
     plot.y_label = "error, px (no box: at the top)";
@@ -406,7 +406,7 @@ int main(int argc, char** argv) {
     std::printf(
         "%zu frames of %s; each target from %d start box%s; within: the estimate within "
         "%.0f px of the truth; a switch: a run of frames claiming a measurement more than "
-        "%.0f px from the truth while the walker is in the frame\n\n",
+        "%.0f px from the truth while the target is in the frame\n\n",
         frames.size(), video.c_str(), starts, starts > 1 ? "es" : "", radius, 2 * radius);
     std::printf(
         "| target | tracker | frames in view | within %.0f px | median error, px | "
@@ -422,7 +422,7 @@ int main(int argc, char** argv) {
         ours.wrong_after, ours.occlusions, ours.wrong_after == 0 ? "met" : "NOT met");
     std::printf(
         "quadtrack: frames giving a position more than a frame width (height) outside the image "
-        "while the walker is in it: %d (aim 0): %s\n",
+        "while the target is in it: %d (aim 0): %s\n",
         ours.far_outside, ours.far_outside == 0 ? "met" : "NOT met");
     if (trackers.size() > 1) {
         std::string kept;

@@ -696,6 +696,53 @@ TEST_CASE("TargetTracker lost rules: unseen, bad geometry, implausible accumulat
     }
 }
 
+TEST_CASE("TargetTracker: a frame whose motion is unmeasured assumes the last trusted one",
+          "[target]") {
+    // The camera pans 3 px a frame over a still target: trusted homographies for 5 frames, then
+    // frames with too few corner pairs to measure the motion (a textureless stretch).
+    const TargetTrackerParams params;
+    FrameGeometry unmeasured;
+    unmeasured.unmeasured = true;
+    TargetTracker t;
+    t.init(100, 100, 320, 240, params);
+    float x = 100;
+    for (int k = 1; k <= 5; ++k) {
+        x += 3;
+        t.predict(geometry(translation(3, 0)));
+        REQUIRE(t.update(seen(x, 100)).state == TargetState::measured);
+    }
+    SECTION("the measurement is used, in the image the assumed motion gives") {
+        for (int k = 1; k <= 40; ++k) {
+            x += 3;
+            t.predict(unmeasured);
+            const TargetEstimate e = t.update(seen(x, 100));
+            INFO("frame " << k);
+            REQUIRE(e.state == TargetState::measured);
+            CHECK(e.x == Approx(x).margin(0.5));
+            CHECK(e.y == Approx(100).margin(0.5));
+        }
+    }
+    SECTION("unseen, the estimate moves with the assumed motion and is not lost to bad geometry") {
+        for (int k = 1; k <= 3 * params.max_bad_geometry; ++k) {
+            x += 3;
+            t.predict(unmeasured);
+            const TargetEstimate e = t.update(kNone);
+            INFO("frame " << k);
+            REQUIRE(e.state == TargetState::predicted);
+            CHECK(e.x == Approx(x).margin(0.5));
+        }
+    }
+    SECTION("a homography that failed with pairs enough is evidence: the measurement is refused") {
+        for (int k = 1; k <= params.max_bad_geometry; ++k) {
+            x += 3;
+            t.predict(geometry(Homography{}, 0, false));
+            CHECK(t.update(seen(x, 100)).state == TargetState::predicted);
+        }
+        t.predict(geometry(Homography{}, 0, false));
+        CHECK(t.update(seen(x + 3, 100)).state == TargetState::lost);
+    }
+}
+
 TEST_CASE("TargetTracker lost rule: an estimate more than max_outside frames outside the image",
           "[target]") {
     // A static camera; the target measured moving right at 8 px a frame from x = 200 until it

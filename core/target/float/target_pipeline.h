@@ -272,6 +272,7 @@ private:
             [&] { mark(TargetStage::match); });
         mark(TargetStage::homography);
         g.valid = out.geometry.ransac.status == HomographyStatus::ok;
+        g.unmeasured = out.geometry.ransac.status == HomographyStatus::too_few_pairs;
         g.h = out.geometry.ransac.h;
         g.reprojection_px = out.geometry.ransac.reprojection_px;
         g.d_rep = out.geometry.ransac.d_rep;

@@ -64,6 +64,7 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     height_ = height;
     state_ = TargetState::measured;
     geometry_ok_ = true;
+    geometry_assumed_ = false;
     unseen_ = 0;
     bad_geometry_ = 0;
     last_x_ = x;
@@ -179,10 +180,11 @@ SearchWindow TargetTracker::predict(const FrameGeometry& g) {
         case TargetMethod::fused:
         case TargetMethod::homography_only: {
             geometry_ok_ = g.valid && geometry_trusted(g, params_);
+            geometry_assumed_ = !geometry_ok_ && g.unmeasured;
             if (geometry_ok_) {
                 last_h_ = g.h;
                 bad_geometry_ = 0;
-            } else if (bad_geometry_ < UINT16_MAX) {
+            } else if (!geometry_assumed_ && bad_geometry_ < UINT16_MAX) {
                 ++bad_geometry_;
             }
             Homography next;
@@ -330,7 +332,7 @@ TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
     float zx = m.x, zy = m.y;
     const bool uses_measurements = params_.method != TargetMethod::homography_only;
     const bool geometry_needed = params_.method == TargetMethod::fused;
-    if (found && uses_measurements && (geometry_ok_ || !geometry_needed)) {
+    if (found && uses_measurements && (geometry_ok_ || geometry_assumed_ || !geometry_needed)) {
         // The measurement in the reference image: A⁻¹ z (equation (10)).
         Homography inv;
         const bool mapped =

@@ -19,7 +19,10 @@
 // inlier_px by construction) below the gate: RepGate::paper compares the paper's sum with
 // th_rep_px2; RepGate::capped (default) its capped RMS with gate_rep_px. A frame whose
 // homography failed or is untrustworthy is carried by the last good one (constant camera
-// motion) and counted.
+// motion) and counted. A frame with too few corner pairs to measure the motion at all
+// (FrameGeometry::unmeasured: a table, a wall, the sky) is no evidence either way: it is carried
+// the same, not counted, and its measurement is used — the paper's gate would lose every target
+// on a textureless background (docs/target.md, Real footage).
 //
 // States, per frame: measured (a measurement accepted), reacquired (the first accepted after
 // frames without one), predicted (none accepted; the target's estimated position is inside
@@ -176,6 +179,10 @@ struct FrameGeometry {
     float reprojection_px = 0;  // equation (7) as RMS over the inliers, px (diagnostic only)
     float d_rep = 0;            // equation (7) over all matched pairs, the paper's sum, px²
     float d_rep_capped_px = 0;  // its capped RMS, px (RansacResult::d_rep_capped_px)
+    // Too few corner pairs to measure the camera's motion (a scene without texture: a table, a
+    // wall, the sky): no evidence either way, so TargetTracker::predict assumes the last
+    // trusted motion and the measurement is still used (see the top of this file).
+    bool unmeasured = false;
 };
 
 // Table II's D_rep condition on the frame's homography (valid aside): true when trusted.
@@ -253,6 +260,7 @@ private:
     uint16_t width_ = 0, height_ = 0;
     TargetState state_ = TargetState::lost;
     bool geometry_ok_ = false;
+    bool geometry_assumed_ = false;  // this frame's motion unmeasured: the last trusted one
     uint16_t unseen_ = 0;
     uint16_t bad_geometry_ = 0;
     float last_x_ = 0, last_y_ = 0;  // template_only: the last match
