@@ -3,7 +3,7 @@
 # page's <!-- bench NAME --> markers, with the date, commit and machine): the figures in docs/
 # are only ever written this way. Usage: bash bench.sh [--quick] [NAME...]
 #   --quick        for iterating: each bench on a fixed subset of about a tenth of its inputs
-#                  (photos-host 150 scenes per set, target-host 2 seeds, footage-host one walker,
+#                  (photos-host 150 scenes per set, target-host 2 seeds, footage-host one walker and the coin,
 #                  ...; a bench with one fixed input, such as a firmware image's frames, runs
 #                  whole), printed only: docs/ is left as it is
 #   gradient-host  core gradient throughput at 640x480, median of repeats, beside OpenCV's Sobel
@@ -50,10 +50,11 @@
 #                  III's reset), the paper's version of each of the project's choices (D_rep,
 #                  search region, morphological detection, formulation); error tables and SVG
 #                  charts in bench_out/target, Fig. 12 (with and without the reset) among them
-#   footage-host   the target tracker on real footage (OpenCV's vtest.avi, opencv-doc, at 384x288)
-#                  against hand-marked truth (vectors/footage): frames within 10 px, identity
-#                  switches, re-acquisition after occlusions, time, beside OpenCV's CSRT and KCF;
-#                  a chart of the error over time a walker in bench_out/footage
+#   footage-host   the target tracker on real footage (OpenCV's vtest.avi, opencv-doc, at 384x288;
+#                  node-opencv's motion.mov, a coin, at 568x320) against hand-marked truth
+#                  (vectors/footage): frames within 10 px, identity switches, re-acquisition
+#                  after occlusions, time, beside OpenCV's CSRT and KCF; a chart of the error
+#                  over time a target in bench_out/footage
 #   soak           the quadrangle tracker (10^6 generated frames, 30 % of sides missed, bursts of
 #                  total loss) and the target tracker (10^5 frames of spells out of view) on seeds
 #                  1-3, built with ASan + UBSan (host-sanitize): recovery, covariance, lost events;
