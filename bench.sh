@@ -3,9 +3,9 @@
 # page's <!-- bench NAME --> markers, with the date, commit and machine): the figures in docs/
 # are only ever written this way. Usage: bash bench.sh [--quick] [NAME...]
 #   --quick        for iterating: each bench on a fixed subset of about a tenth of its inputs
-#                  (photos-host 150 scenes per set, target-host 2 seeds, footage-host one walker and the coin,
-#                  ...; a bench with one fixed input, such as a firmware image's frames, runs
-#                  whole), printed only: docs/ is left as it is
+#                  (photos-host 150 scenes per set, target-host 2 seeds, footage-host one walker
+#                  and the coin, ...; a bench with one fixed input, such as a firmware image's
+#                  frames, runs whole), printed only: docs/ is left as it is
 #   gradient-host  core gradient throughput at 640x480, median of repeats, beside OpenCV's Sobel
 #   gradient-m4    instructions per pixel of the core gradient on Cortex-M4 (QEMU -icount)
 #   lines-host     lines stage accuracy table (default and the paper's Canny front end), vote
