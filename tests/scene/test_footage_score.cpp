@@ -13,20 +13,30 @@
 using qt::bench::Score;
 using qt::bench::Step;
 
+namespace {
+
+// The truth of a walker in a 384 × 288 video from its marks (one a line, after the header).
+qt::scene::FootageTruth truth_of(const std::string& marks) {
+    qt::test::TempDir d;
+    const std::string path = (d.dir / "w.txt").string();
+    std::ofstream(path) << "target w\nvideo v.avi 384x288\nstart 0 94 80 13 41\n" << marks;
+    qt::scene::FootageTruth t;
+    std::string error;
+    REQUIRE(qt::scene::read_footage_truth(path, t, error));
+    return t;
+}
+
+}  // namespace
+
 TEST_CASE("footage score: within, switches, claims while out, an occlusion and its re-acquisition",
           "[footage]") {
     // The walker at (100 + f, 100) in frames 0..15, hidden in 6..8 (marks 6 and 8 occluded,
     // so 7 too; 9 lies between 8 and the visible 10: visible), out of the frame from 16.
-    qt::test::TempDir d;
-    const std::string path = (d.dir / "w.txt").string();
-    std::ofstream(path) << "target w\nvideo v.avi 384x288\nstart 0 94 80 13 41\n"
-                           "0 100 100 13 41 visible\n5 105 100 13 41 visible\n"
-                           "6 106 100 13 41 occluded\n8 108 100 13 41 occluded\n"
-                           "10 110 100 13 41 visible\n15 115 100 13 41 visible\n"
-                           "16 - - - - out\n18 - - - - out\n";
-    qt::scene::FootageTruth t;
-    std::string error;
-    REQUIRE(qt::scene::read_footage_truth(path, t, error));
+    const qt::scene::FootageTruth t = truth_of(
+        "0 100 100 13 41 visible\n5 105 100 13 41 visible\n"
+        "6 106 100 13 41 occluded\n8 108 100 13 41 occluded\n"
+        "10 110 100 13 41 visible\n15 115 100 13 41 visible\n"
+        "16 - - - - out\n18 - - - - out\n");
     // The run, frame by frame: claims, and the estimate's offset in x from the walker.
     struct F {
         bool tracking, claims;
@@ -91,14 +101,8 @@ TEST_CASE("footage score: positions more than a frame width or height outside th
     // A 384 × 288 frame; the walker in it in frames 0..3, out from 4. Outside by more than a
     // frame width: x < -384 or x > 767 (the last pixel, 383, plus 384); by a height: y < -288
     // or y > 575.
-    qt::test::TempDir d;
-    const std::string path = (d.dir / "w.txt").string();
-    std::ofstream(path) << "target w\nvideo v.avi 384x288\nstart 0 94 80 13 41\n"
-                           "0 100 100 13 41 visible\n3 103 100 13 41 visible\n"
-                           "4 - - - - out\n6 - - - - out\n";
-    qt::scene::FootageTruth t;
-    std::string error;
-    REQUIRE(qt::scene::read_footage_truth(path, t, error));
+    const qt::scene::FootageTruth t = truth_of(
+        "0 100 100 13 41 visible\n3 103 100 13 41 visible\n4 - - - - out\n6 - - - - out\n");
     struct F {
         bool tracking;
         double x, y;

@@ -699,7 +699,7 @@ TEST_CASE("TargetTracker lost rules: unseen, bad geometry, implausible accumulat
 TEST_CASE("TargetTracker: a frame whose motion is unmeasured assumes the last trusted one",
           "[target]") {
     // The camera pans 3 px a frame over a still target: trusted homographies for 5 frames, then
-    // frames with too few corner pairs to measure the motion (a textureless stretch).
+    // frames with too few corners to measure the motion (a textureless stretch).
     const TargetTrackerParams params;
     FrameGeometry unmeasured;
     unmeasured.unmeasured = true;

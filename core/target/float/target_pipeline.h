@@ -264,15 +264,21 @@ private:
             gc.match.offset_y = clamp16(ey - cy);
         }
         const bool exclude = params_.ground_corners_only && tracking_ && target_box_.valid;
-        out.geometry = homography_between(
-            prev_, cur, gc, scratch_,
-            [&](const Feature<PatchRadius>& f) {
-                return !exclude || !target_box_.reaches(f.px, f.py, PatchRadius);
-            },
-            [&] { mark(TargetStage::match); });
+        auto ground = [&](const Feature<PatchRadius>& f) {
+            return !exclude || !target_box_.reaches(f.px, f.py, PatchRadius);
+        };
+        out.geometry =
+            homography_between(prev_, cur, gc, scratch_, ground, [&] { mark(TargetStage::match); });
         mark(TargetStage::homography);
         g.valid = out.geometry.ransac.status == HomographyStatus::ok;
-        g.unmeasured = out.geometry.ransac.status == HomographyStatus::too_few_pairs;
+        // Unmeasured: fewer ground corners in either frame than a homography needs inliers
+        // (a bare scene). Corners enough that found no pairs (a cut, noise, a flare) are evidence
+        // against the motion model instead.
+        uint16_t prev_ground = 0;
+        for (uint16_t i = 0; i < prev_.count; ++i) prev_ground += ground(prev_.items[i]) ? 1 : 0;
+        const uint16_t corners = prev_ground < cur.count ? prev_ground : cur.count;
+        g.unmeasured = out.geometry.ransac.status == HomographyStatus::too_few_pairs &&
+                       corners < gc.ransac.min_inliers;
         g.h = out.geometry.ransac.h;
         g.reprojection_px = out.geometry.ransac.reprojection_px;
         g.d_rep = out.geometry.ransac.d_rep;

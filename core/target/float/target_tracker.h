@@ -19,7 +19,7 @@
 // inlier_px by construction) below the gate: RepGate::paper compares the paper's sum with
 // th_rep_px2; RepGate::capped (default) its capped RMS with gate_rep_px. A frame whose
 // homography failed or is untrustworthy is carried by the last good one (constant camera
-// motion) and counted. A frame with too few corner pairs to measure the motion at all
+// motion) and counted. A frame with too few corners to measure the motion at all
 // (FrameGeometry::unmeasured: a table, a wall, the sky) is no evidence either way: it is carried
 // the same, not counted, and its measurement is used — the paper's gate would lose every target
 // on a textureless background (docs/target.md, Real footage).
@@ -179,9 +179,9 @@ struct FrameGeometry {
     float reprojection_px = 0;  // equation (7) as RMS over the inliers, px (diagnostic only)
     float d_rep = 0;            // equation (7) over all matched pairs, the paper's sum, px²
     float d_rep_capped_px = 0;  // its capped RMS, px (RansacResult::d_rep_capped_px)
-    // Too few corner pairs to measure the camera's motion (a scene without texture: a table, a
-    // wall, the sky): no evidence either way, so TargetTracker::predict assumes the last
-    // trusted motion and the measurement is still used (see the top of this file).
+    // Too few corners in either frame to measure the camera's motion (a scene without texture:
+    // a table, a wall, the sky): no evidence either way, so TargetTracker::predict assumes the
+    // last trusted motion and the measurement is still used (see the top of this file).
     bool unmeasured = false;
 };
 
