@@ -275,7 +275,8 @@ private:
         // (a bare scene). Corners enough that found no pairs (a cut, noise, a flare) are evidence
         // against the motion model instead.
         uint16_t prev_ground = 0;
-        for (uint16_t i = 0; i < prev_.count; ++i) prev_ground += ground(prev_.items[i]) ? 1 : 0;
+        for (uint16_t i = 0; i < prev_.count; ++i)
+            if (ground(prev_.items[i])) ++prev_ground;
         const uint16_t corners = prev_ground < cur.count ? prev_ground : cur.count;
         g.unmeasured = out.geometry.ransac.status == HomographyStatus::too_few_pairs &&
                        corners < gc.ransac.min_inliers;
