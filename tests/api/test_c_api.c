@@ -132,6 +132,13 @@ static void track_in_bands(qt_tracked_quad* t) {
 /* The rectangle of the tracking tests in frame k: 160 x 120 px, moving 2 px right a frame. */
 static rect moving_rect(int k) { return (rect){80 + 2 * k, 60, 239 + 2 * k, 179}; }
 
+/* Renders frame k of the moving rectangle and writes its corners' truth to want. */
+static void render_moving(int k, qt_point want[4]) {
+    const rect r = moving_rect(k);
+    truth(r, want);
+    render(r);
+}
+
 /* The hand-worked frame through the camera path: four lines, one quadrangle, corners and
  * sides as worked out at the top. */
 static void test_detect(const qt_config* cfg) {
@@ -225,12 +232,10 @@ static void test_track(const qt_config* cfg) {
     CHECK_STATUS(qt_detector_init(&det, cfg), QT_OK);
     CHECK_STATUS(qt_tracker_init(&trk, cfg, W, H), QT_OK);
     for (int k = 0; k < 10; ++k) {
-        const rect r = moving_rect(k);
         qt_point want[4];
         qt_tracked_quad t;
         char what[40];
-        truth(r, want);
-        render(r);
+        render_moving(k, want);
         CHECK_STATUS(detect_image(&det), QT_OK);
         CHECK_STATUS(qt_track(&trk, &det, &t), QT_OK);
         CHECK(t.state == (k == 0 ? QT_TRACK_STARTED : QT_TRACK_TRACKING));
@@ -274,12 +279,10 @@ static void test_tracking_mode(const qt_config* defaults) {
     CHECK_STATUS(qt_detector_init(&det, &cfg), QT_OK);
     CHECK_STATUS(qt_tracker_init(&trk, &cfg, W, H), QT_OK);
     for (int k = 0; k < 10; ++k) {
-        const rect r = moving_rect(k);
         qt_point want[4];
         qt_tracked_quad t;
         char what[40];
-        truth(r, want);
-        render(r);
+        render_moving(k, want);
         track_in_bands(&t);
         CHECK(t.banded == (k % 4 != 0));
         CHECK(t.track_id == 1);

@@ -57,32 +57,18 @@ bool geometry_trusted(const FrameGeometry& g, const TargetTrackerParams& p) {
 void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
                          const TargetTrackerParams& params) {
     params_ = params;
-    kf_.init(x, y, params.kalman);
-    acc_ = Homography{};
     last_h_ = Homography{};
     width_ = width;
     height_ = height;
     state_ = TargetState::measured;
     geometry_ok_ = true;
     geometry_assumed_ = false;
-    unseen_ = 0;
     bad_geometry_ = 0;
     last_x_ = x;
     last_y_ = y;
-    held_x_ = x;
-    held_y_ = y;
-    meas_x_ = x;
-    meas_y_ = y;
-    unconfirmed_ = 0;
-    lost_by_exit_ = false;
     lost_frames_ = 0;
-    ref_x_ = x;
-    ref_y_ = y;
-    history_start_ = 0;
-    history_count_ = 0;
     frame_ = 0;
-    coasting_ = false;
-    remember(x, y);
+    restart_on(x, y);  // the filter, A, the history and the counts since the last measurement
     for (int i = 0; i < 4; ++i) {
         roi_x_[i] = x;
         roi_y_[i] = y;
@@ -142,7 +128,7 @@ bool TargetTracker::searching_lost() const {
 }
 
 // The filter started again on a match at (x, y) in the current image, which becomes the
-// reference image; the camera's motion (last_h_) and the frame count go on.
+// reference image; the camera's motion (last_h_) and the frame count go on (init() sets them).
 void TargetTracker::restart_on(float x, float y) {
     kf_.init(x, y, params_.kalman);
     acc_ = Homography{};
