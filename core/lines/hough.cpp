@@ -180,7 +180,12 @@ public:
             edges_[i] = ep::with_state(pt, ep::kVoted);
             ++stats_.points_visited;
             uint32_t best_bin = 0;
-            if (cast(pt, &best_bin) == 0) continue;
+            const uint32_t top = cast(pt, &best_bin);
+            if (top == 0) continue;
+            if (!stands_out(best_bin, top)) {
+                ++stats_.flat_bins;
+                continue;
+            }
             ++stats_.lines_followed;
             Segment s;
             if (!follow(i, best_bin / n_rho_, s)) {
@@ -260,6 +265,21 @@ private:
     uint32_t cast(edge_point pt, uint32_t* best_bin) {
         const Votes v = votes_of(pt);
         return cast_votes(v, &stats_) ? best_of_votes(v, best_bin) : 0;
+    }
+
+    // Whether bin `index` (count `top`) stands out in its θ row: top at least min_peak_percent %
+    // of its flank's count on one side at least, a flank's count being the larger of the bins
+    // kPeakFlank and kPeakFlank + 1 bins that way (0 beyond the row's ends). A lone line has
+    // both flanks low, either line of a pair (a bar's two edges) one; texture neither.
+    bool stands_out(uint32_t index, uint32_t top) const {
+        if (p_.min_peak_percent == 0) return true;
+        const uint32_t r = index % n_rho_;
+        uint32_t below = 0, above = 0;
+        for (uint32_t d = kPeakFlank; d <= kPeakFlank + 1u; ++d) {
+            if (r >= d && ws_.bins[index - d] > below) below = ws_.bins[index - d];
+            if (r + d < n_rho_ && ws_.bins[index + d] > above) above = ws_.bins[index + d];
+        }
+        return top * 100u >= (below < above ? below : above) * p_.min_peak_percent;
     }
 
     // Withdraws the point's votes.

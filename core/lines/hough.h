@@ -11,6 +11,10 @@
 // direction), which cuts the votes per point from theta_bins to about
 // theta_bins·2·window/180 and keeps clutter of other orientations out of each bin.
 //
+// A bin at the threshold is followed only when it stands out in its θ row (min_peak_percent): a
+// line puts its votes in a bin or two, a textured patch spreads them over its width, and most
+// walks from such bins find no segment yet cost as much as those that do.
+//
 // Work per frame is bounded by two budgets (HoughParams): the points that vote (max_voters)
 // and the steps of line following (max_walk_steps); the votes withdrawn are at most those cast.
 #pragma once
@@ -40,6 +44,13 @@ struct HoughParams {
     // share of the list has (at half the capacity the photo bench's detection moves by at most
     // 0.2 point: docs/lines.md).
     uint16_t max_voters = 0;
+    // A bin that reached the threshold is followed only when its count is at least this
+    // percentage of its flank's on one side at least (the larger count 2 and 3 bins that way in
+    // its θ row, kPeakFlank: lines 2·rho_step..4·rho_step px beside it); else it waits for more
+    // votes. A lone line, or either edge of a bar, has a low flank; a textured patch, whose
+    // votes spread over its width, has none. 0: every bin at the threshold is followed (the
+    // reference PPHT).
+    uint16_t min_peak_percent = 300;
     uint64_t seed = 1;  // visiting order
 };
 
@@ -55,15 +66,21 @@ struct HoughRanges {
     SettingRange corridor{"px", 0, 4};
     SettingRange max_walk_steps{"steps", 1, 100000000};
     SettingRange max_voters{"points", 0, 65535};
+    SettingRange min_peak_percent{"%", 0, 1000};
     SettingRange seed{"", 0, 2147483647};
 };
 inline constexpr HoughRanges kHoughRanges{};
+
+// The flank min_peak_percent compares a bin with: the bins this far and one farther along ρ.
+constexpr uint32_t kPeakFlank = 2;
 
 struct HoughStats {
     uint32_t points_visited = 0;    // edge points that voted
     uint32_t votes = 0;             // accumulator increments
     uint32_t saturated_votes = 0;   // increments lost to a bin at 255
-    uint32_t lines_followed = 0;    // bins that reached the threshold
+    uint32_t lines_followed = 0;    // bins that reached the threshold and stood out
+    uint32_t flat_bins = 0;         // votes that left a bin at the threshold that did not stand
+                                    // out (min_peak_percent): not followed then
     uint32_t walk_steps = 0;        // pixels stepped while following lines
     uint16_t segments = 0;          // segments reported
     uint16_t segments_dropped = 0;  // segments found with the output full: the shortest of

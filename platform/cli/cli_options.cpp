@@ -176,6 +176,14 @@ const FlagTable<DetectOptions, Command>& detect_flags() {
                 hough.max_voters,
                 [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.max_voters; },
                 "0: half the edge capacity, 2048 at QVGA, 8192 at VGA"),
+            integer<uint16_t>(
+                "min-peak", "PERCENT",
+                "PPHT: a bin at the threshold is followed only when its count is at least this "
+                "percentage of its flank's on one side (the larger of the bins 2 and 3 away in "
+                "its theta row)",
+                hough.min_peak_percent,
+                [](DetectOptions& o) -> uint16_t& { return o.params.lines.hough.min_peak_percent; },
+                "0: every bin"),
             integer<uint64_t>(
                 "seed", "N", "PPHT visiting order seed", hough.seed,
                 [](DetectOptions& o) -> uint64_t& { return o.params.lines.hough.seed; }),

@@ -51,6 +51,44 @@ io::GreyImage polygon_frame(uint64_t seed) {
     return scene::random_polygon_scene(o, 2, 40, 60).render();
 }
 
+// Whether the detector's lines hold one along the segment side = {x1, y1, x2, y2} (px): both
+// ends within 2 px of its line and at least 0.6 of its length.
+bool side_found(const double (&side)[4]) {
+    const double dx = side[2] - side[0], dy = side[3] - side[1];
+    const double len = std::hypot(dx, dy);
+    for (uint16_t i = 0; i < g_det.line_count(); ++i) {
+        const Segment& l = g_det.lines()[i];
+        const double ends[2][2] = {{l.x1.raw / 65536.0, l.y1.raw / 65536.0},
+                                   {l.x2.raw / 65536.0, l.y2.raw / 65536.0}};
+        bool near = true;
+        for (const auto& e : ends)
+            near = near && std::fabs((e[0] - side[0]) * dy - (e[1] - side[1]) * dx) / len < 2.0;
+        const double l_len = std::hypot(ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]);
+        if (near && l_len >= 0.6 * len) return true;
+    }
+    return false;
+}
+
+// A bright 200 x 140 box (columns 60..259, rows 50..189) on grainy noise, and its sides on the
+// pixel boundaries (an edge between x0 - 1 and x0 lies at x0 - 0.5).
+io::GreyImage box_on_grain(double (&sides)[4][4]) {
+    io::GreyImage img(320, 240);
+    Pcg32 rng(11);
+    const int x0 = 60, y0 = 50, x1 = 260, y1 = 190;
+    for (int y = 0; y < 240; ++y)
+        for (int x = 0; x < 320; ++x) {
+            const bool inside = x >= x0 && x < x1 && y >= y0 && y < y1;
+            img.at(x, y) = static_cast<uint8_t>((inside ? 190 : 40) + rng.next() % 48u);
+        }
+    const double s[4][4] = {{x0 - 0.5, y0 - 0.5, x1 - 0.5, y0 - 0.5},
+                            {x1 - 0.5, y0 - 0.5, x1 - 0.5, y1 - 0.5},
+                            {x0 - 0.5, y1 - 0.5, x1 - 0.5, y1 - 0.5},
+                            {x0 - 0.5, y0 - 0.5, x0 - 0.5, y1 - 0.5}};
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 4; ++k) sides[i][k] = s[i][k];
+    return img;
+}
+
 }  // namespace
 
 TEST_CASE("PPHT accumulator equals a double-precision Hough of the same votes within one bin",
@@ -217,34 +255,8 @@ TEST_CASE("the voting budget bounds the points that vote and keeps a clear board
           "[hough]") {
     // A bright 200 x 140 box on grainy noise: the noise gives thousands of edge points, more
     // than half the list, so the default budget (half the capacity, 2048) binds.
-    io::GreyImage img(320, 240);
-    Pcg32 rng(11);
-    const int x0 = 60, y0 = 50, x1 = 260, y1 = 190;  // the box: columns x0..x1 - 1, rows y0..y1 - 1
-    for (int y = 0; y < 240; ++y)
-        for (int x = 0; x < 320; ++x) {
-            const bool inside = x >= x0 && x < x1 && y >= y0 && y < y1;
-            img.at(x, y) = static_cast<uint8_t>((inside ? 190 : 40) + rng.next() % 48u);
-        }
-    // The sides on the pixel boundaries (an edge between x0 - 1 and x0 lies at x0 - 0.5).
-    const double sides[4][4] = {{x0 - 0.5, y0 - 0.5, x1 - 0.5, y0 - 0.5},
-                                {x1 - 0.5, y0 - 0.5, x1 - 0.5, y1 - 0.5},
-                                {x0 - 0.5, y1 - 0.5, x1 - 0.5, y1 - 0.5},
-                                {x0 - 0.5, y0 - 0.5, x0 - 0.5, y1 - 0.5}};
-    auto side_found = [](const double(&side)[4]) {
-        const double dx = side[2] - side[0], dy = side[3] - side[1];
-        const double len = std::hypot(dx, dy);
-        for (uint16_t i = 0; i < g_det.line_count(); ++i) {
-            const Segment& l = g_det.lines()[i];
-            const double ends[2][2] = {{l.x1.raw / 65536.0, l.y1.raw / 65536.0},
-                                       {l.x2.raw / 65536.0, l.y2.raw / 65536.0}};
-            bool near = true;
-            for (const auto& e : ends)
-                near = near && std::fabs((e[0] - side[0]) * dy - (e[1] - side[1]) * dx) / len < 2.0;
-            const double l_len = std::hypot(ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]);
-            if (near && l_len >= 0.6 * len) return true;
-        }
-        return false;
-    };
+    double sides[4][4];
+    const io::GreyImage img = box_on_grain(sides);
     LineParams p;
     REQUIRE(detect(img, p) == Status::capacity_exceeded);
     const HoughStats by_default = g_det.stats().hough;
@@ -273,6 +285,48 @@ TEST_CASE("the voting budget bounds the points that vote and keeps a clear board
     detect(img, p);
     REQUIRE_FALSE(g_det.stats().hough.voters_exhausted);
     REQUIRE(g_det.stats().hough.points_visited > 2048);
+}
+
+TEST_CASE(
+    "a bin at the threshold is followed when it stands out on one side: grain waits, a "
+    "bar's two edges and stripes do not",
+    "[hough]") {
+    // The box on grain: most bins the grain raises to the threshold have grain on both flanks
+    // and are not followed; the box's sides still are, with fewer walks than the reference PPHT.
+    double sides[4][4];
+    const io::GreyImage grain = box_on_grain(sides);
+    LineParams reference;
+    reference.hough.min_peak_percent = 0;
+    detect(grain, reference);
+    const HoughStats all = g_det.stats().hough;
+    REQUIRE(all.flat_bins == 0);
+    detect(grain, LineParams{});
+    const HoughStats peaks = g_det.stats().hough;
+    REQUIRE(peaks.flat_bins > 0);
+    REQUIRE(peaks.lines_followed < all.lines_followed);
+    REQUIRE(peaks.walk_steps < all.walk_steps);
+    for (const auto& side : sides) REQUIRE(side_found(side));
+
+    // Dark bars 5 px wide on a flat grey: a bar's two edges are 5 px apart, so each edge's bin
+    // has the other's 2 or 3 bins beside it (rho 2 px) and only the far flank low. Five stripes
+    // 5 px apart (dark 5, light 5): an inner edge has edges on both flanks until its
+    // neighbours are consumed. Every edge is found, and with the reference PPHT too.
+    for (const int bars : {1, 5}) {
+        io::GreyImage img(320, 240, 150);
+        const int left = 100, top = 40, bottom = 200;  // rows top..bottom - 1
+        for (int b = 0; b < bars; ++b)
+            for (int y = top; y < bottom; ++y)
+                for (int x = left + 10 * b; x < left + 10 * b + 5; ++x) img.at(x, y) = 60;
+        for (const LineParams& p : {LineParams{}, reference}) {
+            REQUIRE(detect(img, p) == Status::ok);
+            for (int e = 0; e < 2 * bars; ++e) {
+                const double x = left + 5 * e - 0.5;
+                const double edge[4] = {x, top + 0.0, x, bottom - 1.0};
+                CAPTURE(bars, e, p.hough.min_peak_percent);
+                REQUIRE(side_found(edge));
+            }
+        }
+    }
 }
 
 TEST_CASE("the QVGA lines stage fits 48 KiB of RAM", "[hough]") {

@@ -169,9 +169,10 @@ void add_lines(Out& o, const Lines& d) {
     for (int64_t x :
          {int64_t{s.edges}, int64_t{s.edges_dropped}, int64_t{s.hough.points_visited},
           int64_t{s.hough.votes}, int64_t{s.hough.saturated_votes}, int64_t{s.hough.lines_followed},
-          int64_t{s.hough.walk_steps}, int64_t{s.hough.segments}, int64_t{s.hough.segments_dropped},
-          int64_t{s.hough.budget_exhausted}, int64_t{s.cluster.clusters},
-          int64_t{s.cluster.clusters_dropped}, int64_t{s.cluster.ends_joined}})
+          int64_t{s.hough.flat_bins}, int64_t{s.hough.walk_steps}, int64_t{s.hough.segments},
+          int64_t{s.hough.segments_dropped}, int64_t{s.hough.budget_exhausted},
+          int64_t{s.cluster.clusters}, int64_t{s.cluster.clusters_dropped},
+          int64_t{s.cluster.ends_joined}})
         o.add(x);
     const EdgeList& e = d.edges();
     o.add(int64_t{e.size()});
