@@ -271,15 +271,16 @@ private:
             homography_between(prev_, cur, gc, scratch_, ground, [&] { mark(TargetStage::match); });
         mark(TargetStage::homography);
         g.valid = out.geometry.ransac.status == HomographyStatus::ok;
-        // Unmeasured: fewer ground corners in either frame than a homography needs inliers
-        // (a bare scene). Corners enough that found no pairs (a cut, noise, a flare) are evidence
-        // against the motion model instead.
-        uint16_t prev_ground = 0;
-        for (uint16_t i = 0; i < prev_.count; ++i)
-            if (ground(prev_.items[i])) ++prev_ground;
-        const uint16_t corners = prev_ground < cur.count ? prev_ground : cur.count;
-        g.unmeasured = out.geometry.ransac.status == HomographyStatus::too_few_pairs &&
-                       corners < gc.ransac.min_inliers;
+        // Unmeasured: too few pairs, with fewer ground corners in the previous frame (or corners
+        // in this one) than a homography needs inliers (a bare scene). Corners enough that found
+        // no pairs (a cut, noise, a flare) are evidence against the motion model instead. Counted
+        // only when the pairs were too few.
+        if (out.geometry.ransac.status == HomographyStatus::too_few_pairs) {
+            uint16_t corners = 0;
+            for (uint16_t i = 0; i < prev_.count && corners < cur.count; ++i)
+                if (ground(prev_.items[i])) ++corners;
+            g.unmeasured = corners < gc.ransac.min_inliers;
+        }
         g.h = out.geometry.ransac.h;
         g.reprojection_px = out.geometry.ransac.reprojection_px;
         g.d_rep = out.geometry.ransac.d_rep;
