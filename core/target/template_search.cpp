@@ -63,10 +63,15 @@ struct Search {
 // order they are scored in.
 struct Best {
     int32_t score = INT32_MIN, u = 0, v = 0;
-    uint32_t positions = 0;  // candidates scored or ruled out
+    uint32_t positions = 0;                // candidates scored or ruled out
+    int32_t bar() const { return score; }  // what a candidate must reach to count
+    static bool before(int32_t s, int32_t cu, int32_t cv, int32_t than_s, int32_t than_u,
+                       int32_t than_v) {
+        return s > than_s || (s == than_s && (cv < than_v || (cv == than_v && cu < than_u)));
+    }
     void consider(int32_t s, int32_t cu, int32_t cv) {
         ++positions;
-        if (s > score || (s == score && (cv < v || (cv == v && cu < u)))) {
+        if (before(s, cu, cv, score, u, v)) {
             score = s;
             u = cu;
             v = cv;
@@ -74,17 +79,44 @@ struct Best {
     }
 };
 
+// The kLeaders best placements of a coarse pass, in the order of Best (the first the best).
+constexpr int kLeaders = 3;
+struct Leaders {
+    Best at[kLeaders];
+    uint32_t positions = 0;
+    // The score a candidate must reach to enter (the last leader's; INT32_MIN while not full).
+    int32_t bar() const { return at[kLeaders - 1].score; }
+    void consider(int32_t s, int32_t cu, int32_t cv) {
+        ++positions;
+        int k = kLeaders;
+        while (k > 0 && Best::before(s, cu, cv, at[k - 1].score, at[k - 1].u, at[k - 1].v)) --k;
+        if (k == kLeaders) return;
+        for (int j = kLeaders - 1; j > k; --j) at[j] = at[j - 1];
+        at[k].score = s;
+        at[k].u = cu;
+        at[k].v = cv;
+    }
+};
+
 // The candidates' columns [u0, u1 + tw) in strips of at most kStrip: Σb and Σb² of each
-// placement from sums over its columns (each column's th pixels, slid down a row per row of
+// placement from sums over its columns (each column's th pixels, slid down the rows of
 // placements), so that a placement costs only its Σab (one multiply-add a pixel). The NccSums
-// are those Search::score() adds up pixel by pixel: the same scores, the same best.
+// are those Search::score() adds up pixel by pixel: the same scores, the same best. Placements
+// (u0 + i·step, v0 + j·step) only; Sink is Best or Leaders.
 constexpr int32_t kStrip = 64;
 
-void scan_strips(const Search& q, Best& best) {
+// Windows of at most this many placements are searched whole at any step: the coarse pass and
+// the leaders' neighbours would score about as many.
+constexpr int64_t kExhaustiveUpTo = 49;
+
+template <class Sink>
+void scan_strips(const Search& q, int32_t step, Sink& best) {
     const uint8_t tw = q.tw, th = q.th;
     uint32_t col_sum[kStrip], col_sq[kStrip];
-    for (int32_t s0 = q.u0; s0 <= q.u1; s0 += kStrip - tw + 1) {
-        const int32_t s1 = q.u1 < s0 + kStrip - tw ? q.u1 : s0 + kStrip - tw;  // last placement
+    // Strips start on the lattice and hold whole placements: kStrip − tw + 1 of them at most.
+    const int32_t span = (kStrip - tw + 1) / step * step;
+    for (int32_t s0 = q.u0; s0 <= q.u1; s0 += span) {
+        const int32_t s1 = q.u1 < s0 + span - 1 ? q.u1 : s0 + span - 1;  // last placement
         const int32_t cols = s1 - s0 + tw;
         const uint8_t* left = q.region.pixels + static_cast<uint32_t>(s0 - q.region.x0);
         auto row_at = [&](int32_t r) {
@@ -97,43 +129,73 @@ void scan_strips(const Search& q, Best& best) {
                 col_sq[c] += uint32_t{in[c]} * in[c];
             }
         };
-        // The columns hold rows [v0, v0 + th − 1) before the first row of placements; each
-        // row v of placements adds row v + th − 1 and (after the first) removes row v − 1.
-        for (int32_t c = 0; c < cols; ++c) col_sum[c] = col_sq[c] = 0;
-        for (int32_t r = q.v0; r < q.v0 + th - 1; ++r) add_row(r);
-        for (int32_t v = q.v0; v <= q.v1; ++v) {
-            add_row(v + th - 1);
-            if (v > q.v0) {
-                const uint8_t* out = row_at(v - 1);
-                for (int32_t c = 0; c < cols; ++c) {
-                    col_sum[c] -= out[c];
-                    col_sq[c] -= uint32_t{out[c]} * out[c];
-                }
+        auto remove_row = [&](int32_t r) {
+            const uint8_t* out = row_at(r);
+            for (int32_t c = 0; c < cols; ++c) {
+                col_sum[c] -= out[c];
+                col_sq[c] -= uint32_t{out[c]} * out[c];
             }
+        };
+        // The columns hold rows [v, v + th) for each row v of placements: the first's rows,
+        // then each step's rows in and out.
+        for (int32_t c = 0; c < cols; ++c) col_sum[c] = col_sq[c] = 0;
+        for (int32_t r = q.v0; r < q.v0 + th; ++r) add_row(r);
+        for (int32_t v = q.v0; v <= q.v1; v += step) {
+            if (v > q.v0)
+                for (int32_t r = v - step; r < v; ++r) {
+                    remove_row(r);
+                    add_row(r + th);
+                }
             uint32_t box_sum = 0, box_sq = 0;
-            for (int32_t c = 0; c < tw - 1; ++c) {
+            for (int32_t c = 0; c < tw; ++c) {
                 box_sum += col_sum[c];
                 box_sq += col_sq[c];
             }
             const uint8_t* at0 = row_at(v);
-            for (int32_t u = s0; u <= s1; ++u) {
+            for (int32_t u = s0; u <= s1; u += step) {
                 const int32_t c = u - s0;
-                box_sum += col_sum[c + tw - 1];
-                box_sq += col_sq[c + tw - 1];
+                if (u > s0)
+                    for (int32_t k = c - step; k < c; ++k) {
+                        box_sum += col_sum[k + tw] - col_sum[k];
+                        box_sq += col_sq[k + tw] - col_sq[k];
+                    }
                 NccSums s = q.t;
                 s.sb = box_sum;
                 s.sbb = box_sq;
                 s.sab = dot_block(q.tpl, tw, th, at0 + static_cast<uint32_t>(c), q.region.stride);
-                box_sum -= col_sum[c];
-                box_sq -= col_sq[c];
-                // A score certainly below the best cannot beat it (a tie could: it may come
+                // A score certainly below the bar cannot pass it (a tie could: it may come
                 // earlier in row-major order); its root and division are spared.
-                if (ncc_certainly_below(s, best.score))
+                if (ncc_certainly_below(s, best.bar()))
                     ++best.positions;
                 else
                     best.consider(ncc_from_sums(s).q15, u, v);
             }
         }
+    }
+}
+
+// The coarse-to-fine search: the lattice of every step-th placement, then the placements within
+// ±(step − 1) of each of its kLeaders best, each scored once; the best of all in *best.
+void coarse_to_fine(const Search& q, int32_t step, Best& best) {
+    Leaders leaders;
+    scan_strips(q, step, leaders);
+    best.positions = leaders.positions;
+    for (int k = 0; k < kLeaders && leaders.at[k].score != INT32_MIN; ++k) {
+        const Best& l = leaders.at[k];
+        best.consider(l.score, l.u, l.v);
+        --best.positions;  // counted by the coarse pass
+        for (int32_t v = l.v - step + 1; v < l.v + step; ++v)
+            for (int32_t u = l.u - step + 1; u < l.u + step; ++u) {
+                if (u < q.u0 || u > q.u1 || v < q.v0 || v > q.v1) continue;
+                if ((u - q.u0) % step == 0 && (v - q.v0) % step == 0) continue;  // a lattice one
+                // Scored already about an earlier leader?
+                bool seen = false;
+                for (int j = 0; j < k && !seen; ++j) {
+                    const int32_t du = u - leaders.at[j].u, dv = v - leaders.at[j].v;
+                    seen = du > -step && du < step && dv > -step && dv < step;
+                }
+                if (!seen) best.consider(q.score(u, v), u, v);
+            }
     }
 }
 
@@ -162,7 +224,7 @@ void subpixel_q8(const Search& q, const Best& best, int32_t* dx, int32_t* dy) {
 }  // namespace
 
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
-                            int32_t cx, int32_t cy, uint16_t radius) {
+                            int32_t cx, int32_t cy, uint16_t radius, uint8_t step) {
     TemplateHit hit;
     if (tw == 0 || th == 0 || uint32_t{tw} * th > kNccMaxPixels || region.w < tw || region.h < th)
         return hit;
@@ -183,12 +245,15 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     }
     if (q.u0 > q.u1 || q.v0 > q.v1) return hit;  // no candidate lies in the region
     Best best;
+    const int32_t lattice = step < 1 ? 1 : step;
     // A template wider than half a strip (a few rows of many columns) is scored as it is.
     if (tw > kStrip / 2) {
         for (int32_t v = q.v0; v <= q.v1; ++v)
             for (int32_t u = q.u0; u <= q.u1; ++u) best.consider(q.score(u, v), u, v);
+    } else if (lattice == 1 || int64_t{q.u1 - q.u0 + 1} * (q.v1 - q.v0 + 1) <= kExhaustiveUpTo) {
+        scan_strips(q, 1, best);
     } else {
-        scan_strips(q, best);
+        coarse_to_fine(q, lattice, best);
     }
     hit.positions = best.positions;
     hit.found = true;

@@ -38,6 +38,7 @@ struct Variant {
     bool ground_corners_only = qt::TargetPipelineParams{}.ground_corners_only;
     qt::PairSource pairs = qt::FrameHomographyParams{}.pairs;
     uint8_t template_blend = qt::TargetPipelineParams{}.template_blend;
+    uint8_t template_search_step = qt::TargetPipelineParams{}.template_search_step;
 };
 
 using qt::RepGate;
@@ -76,6 +77,10 @@ const Variant kVariants[] = {
     {"fused, template blend 8", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
      qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs, 8},
+    {"fused, full search", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
+     qt::TargetPipelineParams{}.template_blend, 1},
     {"paper form.", TargetMethod::fused, true, 20, 1, TargetFormulation::paper},
     {"paper form., no reset", TargetMethod::fused, false, 20, 1, TargetFormulation::paper},
 };
@@ -319,6 +324,7 @@ int main(int argc, char** argv) {
             config.ground_corners_only = kVariants[v].ground_corners_only;
             config.geometry.pairs = kVariants[v].pairs;
             config.template_blend = kVariants[v].template_blend;
+            config.template_search_step = kVariants[v].template_search_step;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {

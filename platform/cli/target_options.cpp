@@ -249,6 +249,12 @@ const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
                 "N > 1: every accepted match moves it 1/N of the way to the cut there",
                 kTargetPipelineRanges.template_blend,
                 [](TargetOptions& o) -> uint8_t& { return o.config.template_blend; }),
+            integer<uint8_t>(
+                "search-step", "N",
+                "the template search scores every Nth placement of its window along each axis, "
+                "then those beside the three best (1: every placement)",
+                kTargetPipelineRanges.template_search_step,
+                [](TargetOptions& o) -> uint8_t& { return o.config.template_search_step; }),
             real("max-radius", "PX", "largest search window half-side around the prediction",
                  tracker.max_radius_px,
                  [](TargetOptions& o) -> float& { return o.config.tracker.max_radius_px; }),
