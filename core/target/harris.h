@@ -19,6 +19,11 @@
 // each keeps its per_cell strongest corners (a stronger one replaces the weakest; order of
 // strength: response, then earlier y, then earlier x). finish() writes them sorted by that
 // order, strongest first.
+// Bands (band_rows > 0): corners are sought only in the band of band_rows rows about the middle
+// of each cell row; the gradient rows no band's windows reach (needs_gradient_row) are not read
+// and cost nothing but the call. A band's corners are exactly the full frame's corners in its
+// rows (each window sums the same rows). The target pipeline seeks corners in bands
+// (target_pipeline.h): its homography needs a few well-spread corners a cell, not every corner.
 //
 // Row order: pixel rows 0..h−1 and gradient rows 0..h−1, each in order, with gradient row y
 // pushed after pixel row y and before pixel row y+3 (GradientStage emits gradient row y while
@@ -39,6 +44,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "base/setting_range.h"
 #include "base/status.h"
 #include "gradient/gradient_stage.h"
 #include "gradient/gradient_word.h"
@@ -55,7 +61,17 @@ struct HarrisParams {
     uint8_t grid_cols = 8, grid_rows = 6;  // bucketing grid over the frame, cells; >= 1 each
     uint8_t per_cell = 2;                  // strongest corners kept per cell, >= 1;
                                            // grid_cols·grid_rows·per_cell <= MaxFeatures
+    // Rows of each cell row in which corners are sought: the band of this many rows about the
+    // cell row's middle (0, or at least the cell row's height: every row). Gradient rows no
+    // band's windows reach are not read.
+    uint16_t band_rows = 0;
 };
+
+// HarrisParams' ranges (base/setting_range.h).
+struct HarrisRanges {
+    SettingRange band_rows{"rows", 0, 32767};
+};
+inline constexpr HarrisRanges kHarrisRanges{};
 
 struct HarrisStats {
     uint32_t candidates = 0;  // corners found (maxima at or above the floor, inside the border)
@@ -102,10 +118,8 @@ public:
         height_ = height;
         pixel_rows_ = 0;
         gradient_rows_ = 0;
+        filled_ = 0;
         stats_ = HarrisStats{};
-        memset(col_xx_, 0, sizeof col_xx_);
-        memset(col_xy_, 0, sizeof col_xy_);
-        memset(col_yy_, 0, sizeof col_yy_);
         memset(cell_count_, 0, sizeof cell_count_);
         in_frame_ = true;
         return abandoned ? Status::previous_frame_incomplete : Status::ok;
@@ -122,8 +136,14 @@ public:
         if (y >= gradient_rows_ + 3) return abandon(Status::bad_row_order);
         memcpy(pixels_[y % kPixelRows], pixels, row_width());
         pixel_rows_ = static_cast<uint16_t>(y + 1u);
-        const uint32_t cells = uint32_t{config_.grid_cols} * config_.grid_rows;
-        for (uint32_t c = 0; c < cells; ++c)
+        // A corner of cell row j lies in j's rows: only the cell rows within PatchRadius rows
+        // of y can have a patch row here.
+        const int g = config_.grid_rows, h = height_;
+        const int lo = y < PatchRadius ? 0 : y - PatchRadius;
+        const int hi = y + PatchRadius >= h ? h - 1 : y + PatchRadius;
+        const uint32_t first = static_cast<uint32_t>(lo * g / h) * config_.grid_cols;
+        const uint32_t end = static_cast<uint32_t>(hi * g / h + 1) * config_.grid_cols;
+        for (uint32_t c = first; c < end; ++c)
             for (uint32_t k = 0; k < cell_count_[c]; ++k) {
                 Feature<PatchRadius>& f = kept_.items[c * config_.per_cell + k];
                 const int dy = y - f.py;
@@ -140,23 +160,34 @@ public:
         if (!in_frame_ || gradient_rows_ == height_) return Status::not_in_frame;
         if (length != width_) return abandon(Status::bad_row_length);
         if (y != gradient_rows_ || y >= pixel_rows_) return abandon(Status::bad_row_order);
+        gradient_rows_ = static_cast<uint16_t>(y + 1u);
+        if (width_ < kWindowRows) return Status::ok;  // no window fits: no responses
+        // A row no band needs breaks the run of rows in the column sums; the next needed row
+        // starts a new one.
+        if (!needs_gradient_row(y)) {
+            filled_ = 0;
+            return Status::ok;
+        }
         gradient_word* slot = grads_[y % kWindowRows];
         const int yc = y - WindowRadius;  // the row whose windows are complete after this one
-        const bool respond = y + 1 >= kWindowRows && width_ >= kWindowRows;
-        // Row y enters the window; row y − (2V+1), in the slot it takes, leaves it. A frame
-        // narrower than the window has no responses, so its column sums are not kept.
-        if (y >= kWindowRows && respond) {
+        if (filled_ == 0) {
+            memset(col_xx_, 0, sizeof col_xx_);
+            memset(col_xy_, 0, sizeof col_xy_);
+            memset(col_yy_, 0, sizeof col_yy_);
+        }
+        // Row y enters the window; row y − (2V+1), in the slot it takes, leaves it.
+        if (filled_ >= kWindowRows) {
             slide_and_respond(slot, words, resp_[yc % 3]);
-        } else if (y < kWindowRows) {
+        } else {
             add_row(words);
-            if (respond) response_row(resp_[yc % 3]);  // the first complete windows
+            if (filled_ + 1 == kWindowRows) response_row(resp_[yc % 3]);  // the first windows
         }
         memcpy(slot, words, row_width() * sizeof(gradient_word));
-        gradient_rows_ = static_cast<uint16_t>(y + 1u);
-        if (respond) {
-            const int r = yc - 1;  // its neighbours above and below are in: suppress row r
-            if (r >= kBorder && r <= height_ - 1 - kBorder) suppress_row(r);
-        }
+        if (filled_ < kWindowRows + 2) ++filled_;
+        // Row r = yc − 1 has its responses and those of its neighbours once 2V+3 rows are in.
+        const int r = yc - 1;
+        if (filled_ == kWindowRows + 2 && r >= kBorder && r <= height_ - 1 - kBorder && in_band(r))
+            suppress_row(r);
         return Status::ok;
     }
 
@@ -223,6 +254,21 @@ public:
     uint16_t pixel_rows_received() const { return pixel_rows_; }
     uint16_t gradient_rows_received() const { return gradient_rows_; }
 
+    // Whether the frame's gradient row y is read: it reaches the windows of a band's row or of
+    // its neighbours above and below (suppression reads them). The words of a row that is not
+    // read may be anything (the target pipeline does not compute them).
+    bool needs_gradient_row(int y) const {
+        if (config_.band_rows == 0) return true;
+        constexpr int kReach = WindowRadius + 1;
+        const int g = config_.grid_rows, h = height_;
+        const int lo = y - kReach < 0 ? 0 : y - kReach, hi = y + kReach >= h ? h - 1 : y + kReach;
+        for (int j = lo * g / h; j <= hi * g / h; ++j) {
+            const Band b = band(j);
+            if (y >= b.first - kReach && y < b.end + kReach) return true;
+        }
+        return false;
+    }
+
     // The strength order of finish(): response, then smaller y, then smaller x.
     static bool stronger(const Feature<PatchRadius>& a, const Feature<PatchRadius>& b) {
         if (a.response != b.response) return a.response > b.response;
@@ -238,6 +284,23 @@ private:
     Status abandon(Status s) {
         in_frame_ = false;
         return s;
+    }
+
+    // The rows [first, end) of cell row j's band (HarrisParams::band_rows): cell row j holds
+    // rows [ceil(j·h/g), ceil((j+1)·h/g)), the rows whose cell row is j (y·g/h).
+    struct Band {
+        int first, end;
+    };
+    Band band(int j) const {
+        const int g = config_.grid_rows, h = height_;
+        const int start = (j * h + g - 1) / g, stop = ((j + 1) * h + g - 1) / g;
+        if (config_.band_rows == 0 || config_.band_rows >= stop - start) return Band{start, stop};
+        const int first = start + (stop - start - config_.band_rows) / 2;
+        return Band{first, first + config_.band_rows};
+    }
+    bool in_band(int r) const {
+        const Band b = band(r * config_.grid_rows / height_);
+        return r >= b.first && r < b.end;
     }
 
     // Adds a gradient row's products to the column sums. Each column sum holds at most 2V+1
@@ -397,6 +460,7 @@ private:
     HarrisParams config_;
     HarrisStats stats_;
     uint16_t width_ = 0, height_ = 0, pixel_rows_ = 0, gradient_rows_ = 0;
+    int filled_ = 0;  // consecutive needed rows in the column sums, counted up to 2V+3
     bool in_frame_ = false;
 };
 

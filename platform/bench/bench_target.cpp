@@ -39,6 +39,7 @@ struct Variant {
     qt::PairSource pairs = qt::FrameHomographyParams{}.pairs;
     uint8_t template_blend = qt::TargetPipelineParams{}.template_blend;
     uint8_t template_search_step = qt::TargetPipelineParams{}.template_search_step;
+    uint16_t harris_band = qt::TargetPipelineParams{}.harris.band_rows;  // 0: every row
 };
 
 using qt::RepGate;
@@ -81,6 +82,10 @@ const Variant kVariants[] = {
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
      qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
      qt::TargetPipelineParams{}.template_blend, 1},
+    {"fused, every row", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
+     qt::TargetPipelineParams{}.template_blend, qt::TargetPipelineParams{}.template_search_step, 0},
     {"paper form.", TargetMethod::fused, true, 20, 1, TargetFormulation::paper},
     {"paper form., no reset", TargetMethod::fused, false, 20, 1, TargetFormulation::paper},
 };
@@ -325,6 +330,7 @@ int main(int argc, char** argv) {
             config.geometry.pairs = kVariants[v].pairs;
             config.template_blend = kVariants[v].template_blend;
             config.template_search_step = kVariants[v].template_search_step;
+            config.harris.band_rows = kVariants[v].harris_band;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {

@@ -249,6 +249,12 @@ const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
                 "N > 1: every accepted match moves it 1/N of the way to the cut there",
                 kTargetPipelineRanges.template_blend,
                 [](TargetOptions& o) -> uint8_t& { return o.config.template_blend; }),
+            integer<uint16_t>(
+                "harris-band", "ROWS",
+                "corners are sought in a band of this many rows about each cell row's middle "
+                "(0: every row)",
+                kHarrisRanges.band_rows,
+                [](TargetOptions& o) -> uint16_t& { return o.config.harris.band_rows; }),
             integer<uint8_t>(
                 "search-step", "N",
                 "the template search scores every Nth placement of its window along each axis, "

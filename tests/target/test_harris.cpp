@@ -320,6 +320,56 @@ TEST_CASE("Harris rows in any order the contract allows give the same corners", 
     }
 }
 
+TEST_CASE(
+    "Harris in bands finds the reference's corners of the bands' rows and reads no other "
+    "gradient row",
+    "[harris]") {
+    // 120 × 90 in 3 cell rows of 30 rows; a band of b rows is rows [30j + (30 − b)/2, + b) of
+    // cell row j. The reference: the double Harris's corners (every row), those in a band kept.
+    // Gradient rows more than V + 1 = 3 rows from every band row are replaced by noise: no
+    // response, and no suppression, may read them.
+    const Image im = rect_texture(120, 90, 6, 30);
+    const auto all = ref_harris(im, 2, 4, 1e7);
+    const auto clean = gradient_rows(im);
+    static HarrisDetector<128, 255, 4, 2> det;
+    static FeatureSet<4, 255> out;
+    for (int band : {0, 5, 12, 29, 30}) {
+        auto in_band = [&](int y) {
+            if (band == 0 || band >= 30) return true;
+            const int first = y / 30 * 30 + (30 - band) / 2;
+            return y >= first && y < first + band;
+        };
+        std::vector<RefCorner> want;
+        for (const RefCorner& c : all)
+            if (in_band(c.y)) want.push_back(c);
+        INFO("band " << band << ": " << want.size() << " corners");
+        REQUIRE(want.size() >= (band == 5 ? 3u : 10u));
+        auto grads = clean;
+        Pcg32 rng(static_cast<uint64_t>(band) + 1);
+        int noisy = 0;
+        for (int y = 0; y < im.h; ++y) {
+            bool near = false;
+            for (int r = y - 3; r <= y + 3; ++r) near = near || (r >= 0 && r < im.h && in_band(r));
+            if (near) continue;
+            ++noisy;
+            for (auto& w : grads[static_cast<size_t>(y)])
+                w = make_gradient_word_xy(static_cast<int32_t>(rng.below(511)) - 255,
+                                          static_cast<int32_t>(rng.below(511)) - 255);
+        }
+        if (band == 5) REQUIRE(noisy > 40);
+        HarrisParams c = config(10000000, 1, 3, 85);
+        c.band_rows = static_cast<uint16_t>(band);
+        REQUIRE(det.begin_frame(120, 90, c) == Status::ok);
+        for (int y = 0; y < im.h; ++y) {
+            REQUIRE(det.push_pixel_row(&im.px[static_cast<size_t>(y * im.w)], 120) == Status::ok);
+            REQUIRE(det.push_gradient_row(static_cast<uint16_t>(y),
+                                          grads[static_cast<size_t>(y)].data(), 120) == Status::ok);
+        }
+        REQUIRE(det.finish(out) == Status::ok);
+        require_same(out, want, im);
+    }
+}
+
 TEST_CASE("Harris bucketing keeps the per_cell strongest of each cell, strongest first",
           "[harris]") {
     const Image im = rect_texture(120, 90, 5, 40);
