@@ -52,8 +52,9 @@ namespace {
 constexpr uint16_t kWidth = 320, kHeight = 240;  // QvgaTemplateOnly's capacity
 constexpr unsigned kFrameCount = sizeof kTargetFrames / sizeof kTargetFrames[0];
 
-// The aims: instructions per QVGA frame, RAM including the stack, flash.
-constexpr uint64_t kAimInstructions = 4000000;
+// The aims: instructions per QVGA frame (the median frame's; the worst, as the sum of each
+// stage's worst, at most kAimWorstInstructions), RAM including the stack, flash.
+constexpr uint64_t kAimInstructions = 4000000, kAimWorstInstructions = 5000000;
 constexpr uint32_t kAimRamBytes = 64 * 1024, kAimFlashBytes = 128 * 1024;
 
 qt::TargetPipeline<qt::QvgaTemplateOnly> g_pipeline;  // ~53 KiB, in .bss
@@ -173,7 +174,8 @@ int main() {
     }
     // The first frame starts the track and the second has no track to search yet: the median
     // and the worst are over all frames all the same (a start is a frame the part must run).
-    print_instructions("median ", "target_qvga", median_of(g_frames, kFrameCount));
+    const Instructions median = median_of(g_frames, kFrameCount);
+    print_instructions("median ", "target_qvga", median);
     print_instructions("worst ", "target_qvga", worst);
 
     const uint32_t flash = static_cast<uint32_t>(__flash_end - __flash_start);
@@ -189,8 +191,10 @@ int main() {
     print_field("ram_used", ram_used);
     print_field("TargetPipelineQvgaTemplateOnly", sizeof g_pipeline);
     sh_write("\nbudget aims: instructions ");
-    sh_write(worst.total() <= kAimInstructions ? "met" : "NOT met");
-    sh_write(" (<= 4000000 per frame), ram ");
+    sh_write(median.total() <= kAimInstructions && worst.total() <= kAimWorstInstructions
+                 ? "met"
+                 : "NOT met");
+    sh_write(" (median <= 4000000, worst <= 5000000 per frame), ram ");
     sh_write(ram_used <= kAimRamBytes ? "met" : "NOT met");
     sh_write(" (<= 65536 B with the stack), flash ");
     sh_write(flash <= kAimFlashBytes ? "met" : "NOT met");
