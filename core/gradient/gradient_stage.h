@@ -38,9 +38,9 @@ struct WordRowKernel {
 void gradient_row_xy(const uint8_t* above, const uint8_t* center, const uint8_t* below,
                      uint16_t width, gradient_word* out);
 
-// Rows of gx/gy-only words, out[0 .. width): the target pipeline's own gradient pass, whose
-// Harris detector reads nothing else (on a Cortex-M4 the direction bin is most of a word's
-// cost).
+// Rows of gx/gy-only words, out[0 .. width): what a Harris detector reads, and nothing else (on a
+// Cortex-M4 the direction bin is most of a word's cost). The target pipeline's kernel is this one
+// on the rows its detector reads only.
 struct XyWordRowKernel {
     using value_type = gradient_word;
     static constexpr uint16_t kPad = 0;

@@ -549,14 +549,13 @@ private:
     }
 
     TargetPipelineParams params_;
-    // gx, gy only (all Harris reads), and only in the rows Harris reads.
-    struct HarrisRowsKernel {
-        using value_type = gradient_word;
-        static constexpr uint16_t kPad = 0;
+    // XyWordRowKernel in the rows Harris reads only (its bands): the others are not computed.
+    struct HarrisRowsKernel : XyWordRowKernel {
         const HarrisDetector<MaxWidth, MaxFeatures, PatchRadius>* harris = nullptr;
         void operator()(const uint8_t* above, const uint8_t* center, const uint8_t* below,
                         uint16_t width, uint16_t y, gradient_word* out) const {
-            if (harris->needs_gradient_row(y)) gradient_row_xy(above, center, below, width, out);
+            if (harris->needs_gradient_row(y))
+                XyWordRowKernel::operator()(above, center, below, width, y, out);
         }
     };
     GradientStage<MaxWidth, HarrisRowsKernel> gradient_;
