@@ -47,7 +47,16 @@ struct Search {
     const PixelRegion& region;
     NccSums t;               // the template's Σa and Σa², the same at every candidate
     int32_t u0, u1, v0, v1;  // candidates' top-left corners, inclusive
+    int32_t uc = 0, vc = 0;  // the window centre's placement (top-left corner)
+    int64_t prior_scale = 0;  // the motion prior over the radius squared, ⌊prior_q15·2^16 / r²⌋
 
+    // What the motion prior takes off the score of the placement (u, v), Q15: prior_q15 ·
+    // (d / r)², d its distance from the centre, as ⌊prior_scale · d² / 2^16⌋ (no division per
+    // placement; d <= r·√2, so at most 2·prior_q15).
+    int32_t penalty(int32_t u, int32_t v) const {
+        const int64_t du = u - uc, dv = v - vc;
+        return static_cast<int32_t>((prior_scale * (du * du + dv * dv)) >> 16);
+    }
     // The score of the template with its top-left corner at (u, v), Q15.
     int32_t score(int32_t u, int32_t v) const {
         const uint8_t* at = region.pixels + static_cast<uint32_t>(v - region.y0) * region.stride +
@@ -62,19 +71,21 @@ struct Search {
 // The best score so far and where; ties go to the first candidate in row-major order, whatever
 // order they are scored in.
 struct Best {
-    int32_t score = INT32_MIN, u = 0, v = 0;
-    uint32_t positions = 0;                // candidates scored or ruled out
-    int32_t bar() const { return score; }  // what a candidate must reach to count
+    int32_t score = INT32_MIN, u = 0, v = 0;  // score: the NCC less the motion prior's penalty
+    int32_t ncc = 0;                          // the best's own NCC, Q15
+    uint32_t positions = 0;                   // candidates scored or ruled out
+    int32_t bar() const { return score; }     // what a candidate must reach to count
     static bool before(int32_t s, int32_t cu, int32_t cv, int32_t than_s, int32_t than_u,
                        int32_t than_v) {
         return s > than_s || (s == than_s && (cv < than_v || (cv == than_v && cu < than_u)));
     }
-    void consider(int32_t s, int32_t cu, int32_t cv) {
+    void consider(int32_t s, int32_t cu, int32_t cv, int32_t raw) {
         ++positions;
         if (before(s, cu, cv, score, u, v)) {
             score = s;
             u = cu;
             v = cv;
+            ncc = raw;
         }
     }
 };
@@ -86,7 +97,7 @@ struct Leaders {
     uint32_t positions = 0;
     // The score a candidate must reach to enter (the last leader's; INT32_MIN while not full).
     int32_t bar() const { return at[kLeaders - 1].score; }
-    void consider(int32_t s, int32_t cu, int32_t cv) {
+    void consider(int32_t s, int32_t cu, int32_t cv, int32_t raw) {
         ++positions;
         int k = kLeaders;
         while (k > 0 && Best::before(s, cu, cv, at[k - 1].score, at[k - 1].u, at[k - 1].v)) --k;
@@ -95,6 +106,7 @@ struct Leaders {
         at[k].score = s;
         at[k].u = cu;
         at[k].v = cv;
+        at[k].ncc = raw;
     }
 };
 
@@ -165,10 +177,15 @@ void scan_strips(const Search& q, int32_t step, Sink& best) {
                 s.sab = dot_block(q.tpl, tw, th, at0 + static_cast<uint32_t>(c), q.region.stride);
                 // A score certainly below the bar cannot pass it (a tie could: it may come
                 // earlier in row-major order); its root and division are spared.
-                if (ncc_certainly_below(s, best.bar()))
+                // The NCC it needs to reach the bar (none can exceed 32767).
+                const int32_t pen = q.penalty(u, v);
+                const int32_t need = best.bar() == INT32_MIN ? INT32_MIN : best.bar() + pen;
+                if (need > 32767 || ncc_certainly_below(s, need))
                     ++best.positions;
-                else
-                    best.consider(ncc_from_sums(s).q15, u, v);
+                else {
+                    const int32_t raw = ncc_from_sums(s).q15;
+                    best.consider(raw - pen, u, v, raw);
+                }
             }
         }
     }
@@ -182,7 +199,7 @@ void coarse_to_fine(const Search& q, int32_t step, Best& best) {
     best.positions = leaders.positions;
     for (int k = 0; k < kLeaders && leaders.at[k].score != INT32_MIN; ++k) {
         const Best& l = leaders.at[k];
-        best.consider(l.score, l.u, l.v);
+        best.consider(l.score, l.u, l.v, l.ncc);
         --best.positions;  // counted by the coarse pass
         for (int32_t v = l.v - step + 1; v < l.v + step; ++v)
             for (int32_t u = l.u - step + 1; u < l.u + step; ++u) {
@@ -194,7 +211,10 @@ void coarse_to_fine(const Search& q, int32_t step, Best& best) {
                     const int32_t du = u - leaders.at[j].u, dv = v - leaders.at[j].v;
                     seen = du > -step && du < step && dv > -step && dv < step;
                 }
-                if (!seen) best.consider(q.score(u, v), u, v);
+                if (!seen) {
+                    const int32_t raw = q.score(u, v);
+                    best.consider(raw - q.penalty(u, v), u, v, raw);
+                }
             }
     }
 }
@@ -212,19 +232,20 @@ void subpixel_q8(const Search& q, const Best& best, int32_t* dx, int32_t* dy) {
         for (int i = 0; i < 3; ++i) {
             const bool need = (i == 1 || inside_x) && (j == 1 || inside_y);
             if (i == 1 && j == 1)
-                s3[j][i] = best.score;
+                s3[j][i] = best.ncc;
             else if (need)
                 s3[j][i] = q.score(best.u + i - 1, best.v + j - 1);
         }
     if (inside_x && inside_y && vertex_2d_q8(s3, dx, dy)) return;
-    *dx = inside_x ? vertex_q8(s3[1][0], best.score, s3[1][2]) : 0;
-    *dy = inside_y ? vertex_q8(s3[0][1], best.score, s3[2][1]) : 0;
+    *dx = inside_x ? vertex_q8(s3[1][0], best.ncc, s3[1][2]) : 0;
+    *dy = inside_y ? vertex_q8(s3[0][1], best.ncc, s3[2][1]) : 0;
 }
 
 }  // namespace
 
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
-                            int32_t cx, int32_t cy, uint16_t radius, uint8_t step) {
+                            int32_t cx, int32_t cy, uint16_t radius, uint8_t step,
+                            int16_t prior_q15) {
     TemplateHit hit;
     if (tw == 0 || th == 0 || uint32_t{tw} * th > kNccMaxPixels || region.w < tw || region.h < th)
         return hit;
@@ -232,6 +253,10 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     // (cx, cy), and whose template lies in the region.
     const int32_t uc = cx - (tw - 1) / 2, vc = cy - (th - 1) / 2;
     Search q{tpl, tw, th, region, NccSums{}, uc - radius, uc + radius, vc - radius, vc + radius};
+    q.uc = uc;
+    q.vc = vc;
+    if (prior_q15 > 0)
+        q.prior_scale = (int64_t{prior_q15} << 16) / (radius > 0 ? int64_t{radius} * radius : 1);
     if (q.u0 < region.x0) q.u0 = region.x0;
     if (q.v0 < region.y0) q.v0 = region.y0;
     if (q.u1 > region.x0 + region.w - tw) q.u1 = region.x0 + region.w - tw;
@@ -249,7 +274,10 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     // A template wider than half a strip (a few rows of many columns) is scored as it is.
     if (tw > kStrip / 2) {
         for (int32_t v = q.v0; v <= q.v1; ++v)
-            for (int32_t u = q.u0; u <= q.u1; ++u) best.consider(q.score(u, v), u, v);
+            for (int32_t u = q.u0; u <= q.u1; ++u) {
+                const int32_t raw = q.score(u, v);
+                best.consider(raw - q.penalty(u, v), u, v, raw);
+            }
     } else if (lattice == 1 || int64_t{q.u1 - q.u0 + 1} * (q.v1 - q.v0 + 1) <= kExhaustiveUpTo) {
         scan_strips(q, 1, best);
     } else {
@@ -257,7 +285,7 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     }
     hit.positions = best.positions;
     hit.found = true;
-    hit.score_q15 = static_cast<int16_t>(best.score);
+    hit.score_q15 = static_cast<int16_t>(best.ncc);
     int32_t dx = 0, dy = 0;
     subpixel_q8(q, best, &dx, &dy);
     hit.x_q8 = best.u * 256 + (tw - 1) * 128 + dx;

@@ -41,7 +41,10 @@ struct TemplateHit {
 
 // Scores template placements whose centre lies within ±radius px (per axis) of (cx, cy) and
 // whose pixels all lie in the region; keeps the best NCC (ties: the first in row-major order, so
-// every platform agrees).
+// every platform agrees). With a motion prior (prior_q15 > 0) the best is that of the NCC less
+// prior_q15·(d / radius)², d the placement's distance from the centre, as
+// ⌊⌊prior_q15·2^16 / radius²⌋·d² / 2^16⌋ (Q15; radius 0 as 1): of two near-equal matches the
+// nearer wins. score_q15 is the best's own NCC.
 //   step 1: every placement. Work: positions · w · h multiply-adds (Σab; Σb and Σb² come from
 //     column sums slid down the window: 2 per column and row of candidates), a root and a
 //     division for each candidate that may beat the best so far.
@@ -54,12 +57,13 @@ struct TemplateHit {
 // Then 8 more candidates scored in full for the sub-pixel step. A template of more than
 // kNccMaxPixels pixels finds nothing.
 TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const PixelRegion& region,
-                            int32_t cx, int32_t cy, uint16_t radius, uint8_t step = 1);
+                            int32_t cx, int32_t cy, uint16_t radius, uint8_t step = 1,
+                            int16_t prior_q15 = 0);
 
 template <uint8_t MaxSide>
 TemplateHit search_template(const TargetTemplate<MaxSide>& t, const PixelRegion& region, int32_t cx,
-                            int32_t cy, uint16_t radius, uint8_t step = 1) {
-    return search_template(t.pixels, t.w, t.h, region, cx, cy, radius, step);
+                            int32_t cy, uint16_t radius, uint8_t step = 1, int16_t prior_q15 = 0) {
+    return search_template(t.pixels, t.w, t.h, region, cx, cy, radius, step, prior_q15);
 }
 
 // t moved 1/n of the way to c, rounded to nearest (halves up): t + round((c − t) / n); c

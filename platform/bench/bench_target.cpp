@@ -40,6 +40,7 @@ struct Variant {
     uint8_t template_blend = qt::TargetPipelineParams{}.template_blend;
     uint8_t template_search_step = qt::TargetPipelineParams{}.template_search_step;
     uint16_t harris_band = qt::TargetPipelineParams{}.harris.band_rows;  // 0: every row
+    int16_t motion_prior_q15 = qt::TargetPipelineParams{}.motion_prior_q15;
 };
 
 using qt::RepGate;
@@ -86,6 +87,11 @@ const Variant kVariants[] = {
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
      qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
      qt::TargetPipelineParams{}.template_blend, qt::TargetPipelineParams{}.template_search_step, 0},
+    {"fused, no motion prior", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
+     qt::TargetPipelineParams{}.template_blend, qt::TargetPipelineParams{}.template_search_step,
+     qt::TargetPipelineParams{}.harris.band_rows, 0},
     {"paper form.", TargetMethod::fused, true, 20, 1, TargetFormulation::paper},
     {"paper form., no reset", TargetMethod::fused, false, 20, 1, TargetFormulation::paper},
 };
@@ -331,6 +337,7 @@ int main(int argc, char** argv) {
             config.template_blend = kVariants[v].template_blend;
             config.template_search_step = kVariants[v].template_search_step;
             config.harris.band_rows = kVariants[v].harris_band;
+            config.motion_prior_q15 = kVariants[v].motion_prior_q15;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {

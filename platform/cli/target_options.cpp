@@ -249,6 +249,12 @@ const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
                 "N > 1: every accepted match moves it 1/N of the way to the cut there",
                 kTargetPipelineRanges.template_blend,
                 [](TargetOptions& o) -> uint8_t& { return o.config.template_blend; }),
+            integer<int16_t>(
+                "motion-prior", "Q15",
+                "the template search takes this times (distance / window half-side)^2 off a "
+                "placement's NCC before keeping the best (0: the best NCC anywhere)",
+                kTargetPipelineRanges.motion_prior_q15,
+                [](TargetOptions& o) -> int16_t& { return o.config.motion_prior_q15; }),
             integer<uint16_t>(
                 "harris-band", "ROWS",
                 "corners are sought in a band of this many rows about each cell row's middle "
