@@ -41,6 +41,7 @@ struct Variant {
     uint8_t template_search_step = qt::TargetPipelineParams{}.template_search_step;
     uint16_t harris_band = qt::TargetPipelineParams{}.harris.band_rows;  // 0: every row
     int16_t motion_prior_q15 = qt::TargetPipelineParams{}.motion_prior_q15;
+    bool template_follows_ground = qt::TargetPipelineParams{}.template_follows_ground;
 };
 
 using qt::RepGate;
@@ -76,9 +77,15 @@ const Variant kVariants[] = {
     {"fused, corner pairs", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
      qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::PairSource::corners},
-    {"fused, template blend 8", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+    {"fused, template re-cut", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs, 8},
+     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs, 1},
+    {"fused, template as cut", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
+     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
+     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
+     qt::TargetPipelineParams{}.template_blend, qt::TargetPipelineParams{}.template_search_step,
+     qt::TargetPipelineParams{}.harris.band_rows, qt::TargetPipelineParams{}.motion_prior_q15,
+     false},
     {"fused, full search", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
      SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
      qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
@@ -338,6 +345,7 @@ int main(int argc, char** argv) {
             config.template_search_step = kVariants[v].template_search_step;
             config.harris.band_rows = kVariants[v].harris_band;
             config.motion_prior_q15 = kVariants[v].motion_prior_q15;
+            config.template_follows_ground = kVariants[v].template_follows_ground;
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {

@@ -246,9 +246,14 @@ const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
             integer<uint8_t>(
                 "template-blend", "N",
                 "1: the template is replaced by the cut at a match whose NCC fell below 0.85; "
-                "N > 1: every accepted match moves it 1/N of the way to the cut there",
+                "N > 1: every accepted match moves it 1/N of the way to the cut there (a running "
+                "mean over about N frames)",
                 kTargetPipelineRanges.template_blend,
                 [](TargetOptions& o) -> uint8_t& { return o.config.template_blend; }),
+            either("template-pose", "ground|fixed", "ground", "fixed",
+                   "the template is searched (and blended) as the ground's motion since its cut "
+                   "shows it: ground (ours: warped by that motion's Jacobian) or fixed (as cut)",
+                   [](TargetOptions& o) -> bool& { return o.config.template_follows_ground; }),
             integer<int16_t>(
                 "motion-prior", "Q15",
                 "the template search takes this times (distance / window half-side)^2 off a "

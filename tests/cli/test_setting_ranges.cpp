@@ -30,7 +30,8 @@ const std::set<std::string> kNotNumbers = {"edge-front-end", "contrast",    "com
                                            "model",          "roi",         "method",
                                            "reset",          "formulation", "search-region",
                                            "rep-gate",       "detector",    "coast-track",
-                                           "frame-corners",  "pairs",       "tracking-mode"};
+                                           "frame-corners",  "pairs",       "tracking-mode",
+                                           "template-pose"};
 
 // A value lo / 10^decimals + steps / 10^decimals written out in decimal.
 std::string value_text(const SettingRange& r, int64_t scaled) {

@@ -238,6 +238,9 @@ public:
     TargetState state() const { return state_; }
     const TargetTrackerParams& params() const { return params_; }
     const Homography& accumulated() const { return acc_; }
+    // The camera's motion previous → current image the last predict() carried A by (fused and
+    // homography_only: the frame's trusted homography, or the last one); identity otherwise.
+    const Homography& camera_motion() const { return last_h_; }
 
 private:
     bool in_image(float x, float y) const;
