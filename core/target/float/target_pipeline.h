@@ -36,10 +36,10 @@ enum class TargetDetector : uint8_t {
 const char* target_detector_name(TargetDetector d);
 
 // The pipeline's corners: HarrisParams' defaults, sought in a band of 12 rows about the middle
-// of each cell row (40 rows at QVGA). Against every row (band_rows 0) on the generated
-// sequences: the Cortex-M4F rows stage 6.6 M → 2.6 M instructions a frame, the target's error
-// while visible 2.27 → 2.21 px, at the end of the spell out of view 4.1 → 3.7 px (medians over
-// 15 seeds, docs/target.md).
+// of each cell row (40 rows at QVGA). Against every row (band_rows 0): the Cortex-M4F rows
+// stage 6.6 M → 2.6 M instructions a frame; on the generated sequences the target's error while
+// visible 0.87 px both, at the end of the spell out of view 4.6 → 4.8 px (medians over 15
+// seeds); on the real footage 57.8 → 57.9 % within 10 px (docs/target.md).
 constexpr HarrisParams target_harris_params() {
     HarrisParams h;
     h.band_rows = 12;
@@ -72,8 +72,8 @@ struct TargetPipelineParams {
     // The template search's lattice (search_template's step): 1 scores every placement of the
     // window; s > 1 every s-th along each axis, then the placements beside the three best: about
     // 1/s² of the work. 2 (default): the search's Cortex-M4F cost a frame 1.4 M → 0.5 M
-    // instructions median, 2.7 M → 0.8 M worst, with the generated and real-footage figures
-    // within 0.1 px and 0.1 point (docs/target.md).
+    // instructions median, 2.7 M → 0.8 M worst; the generated sequences' figures the same, the
+    // real footage's 57.2 → 57.9 % within 10 px (docs/target.md).
     uint8_t template_search_step = 2;
     // The motion prior (search_template's prior): the template search takes prior·(d / r)² off
     // the NCC of a placement d px from the prediction in a window of half-side r (Q15), and
