@@ -407,6 +407,8 @@ private:
             m.score = d.found ? 1.0f : 0.0f;
             return m;
         }
+        // The template in this frame's pose; its centre offset (under half a pixel, or block)
+        // is left as cut.
         float j[4];
         posed_ok_ = params_.template_follows_ground && pose_.jacobian(j) &&
                     !warp_negligible(j, template_.w, template_.h) &&
