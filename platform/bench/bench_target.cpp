@@ -23,25 +23,15 @@ using qt::TargetMethod;
 using qt::TargetState;
 using qt::cli::TargetRunFrame;
 
+using Params = qt::TargetPipelineParams;
+
 struct Variant {
     const char* name;
     TargetMethod method;
     bool reset;
     float q_pos, q_vel;  // Kalman Q's diagonal, px² and (px/frame)² per frame
-    // The paper's versions of the project's choices (docs/fidelity.md), one at a time.
-    qt::TargetFormulation formulation = qt::TargetFormulation::reference;
-    qt::SearchRegionShape region = qt::SearchRegionShape::square;
-    qt::RepGate rep_gate = qt::RepGate::capped;
-    qt::TargetDetector detector = qt::TargetDetector::ncc_template;
-    uint16_t coast_fit_frames = qt::TargetTrackerParams{}.coast_fit_frames;  // 0: the filter's
-    bool coast_projective = qt::TargetTrackerParams{}.coast_projective;
-    bool ground_corners_only = qt::TargetPipelineParams{}.ground_corners_only;
-    qt::PairSource pairs = qt::FrameHomographyParams{}.pairs;
-    uint8_t template_blend = qt::TargetPipelineParams{}.template_blend;
-    uint8_t template_search_step = qt::TargetPipelineParams{}.template_search_step;
-    uint16_t harris_band = qt::TargetPipelineParams{}.harris.band_rows;  // 0: every row
-    int16_t motion_prior_q15 = qt::TargetPipelineParams{}.motion_prior_q15;
-    bool template_follows_ground = qt::TargetPipelineParams{}.template_follows_ground;
+    // The paper's version of one of the project's choices (docs/fidelity.md), or none.
+    void (*choice)(Params&) = nullptr;
 };
 
 using qt::RepGate;
@@ -60,47 +50,34 @@ const Variant kVariants[] = {
     {"fused, no reset", TargetMethod::fused, false, 20, 1},
     {"fused (paper Q)", TargetMethod::fused, true, 20, 1},
     {"fused, Q 1/0.01", TargetMethod::fused, true, 1, 0.01f},
-    {"fused, paper D_rep", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::paper},
-    {"fused, paper ROI", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::paper},
-    {"fused, morphology", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::morphological},
-    {"fused, velocity coast", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template, 0},
-    {"fused, straight coast", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, false},
-    {"fused, all corners", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, false},
-    {"fused, corner pairs", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::PairSource::corners},
-    {"fused, template re-cut", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs, 1},
-    {"fused, template as cut", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
-     qt::TargetPipelineParams{}.template_blend, qt::TargetPipelineParams{}.template_search_step,
-     qt::TargetPipelineParams{}.harris.band_rows, qt::TargetPipelineParams{}.motion_prior_q15,
-     false},
-    {"fused, full search", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
-     qt::TargetPipelineParams{}.template_blend, 1},
-    {"fused, every row", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
-     qt::TargetPipelineParams{}.template_blend, qt::TargetPipelineParams{}.template_search_step, 0},
-    {"fused, no motion prior", TargetMethod::fused, true, 20, 1, TargetFormulation::reference,
-     SearchRegionShape::square, RepGate::capped, TargetDetector::ncc_template,
-     qt::TargetTrackerParams{}.coast_fit_frames, true, true, qt::FrameHomographyParams{}.pairs,
-     qt::TargetPipelineParams{}.template_blend, qt::TargetPipelineParams{}.template_search_step,
-     qt::TargetPipelineParams{}.harris.band_rows, 0},
-    {"paper form.", TargetMethod::fused, true, 20, 1, TargetFormulation::paper},
-    {"paper form., no reset", TargetMethod::fused, false, 20, 1, TargetFormulation::paper},
+    {"fused, paper D_rep", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.tracker.rep_gate = RepGate::paper; }},
+    {"fused, paper ROI", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.tracker.region = SearchRegionShape::paper; }},
+    {"fused, morphology", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.detector = TargetDetector::morphological; }},
+    {"fused, velocity coast", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.tracker.coast_fit_frames = 0; }},
+    {"fused, straight coast", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.tracker.coast_projective = false; }},
+    {"fused, all corners", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.ground_corners_only = false; }},
+    {"fused, corner pairs", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.geometry.pairs = qt::PairSource::corners; }},
+    {"fused, template re-cut", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.template_blend = 1; }},
+    {"fused, template as cut", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.template_follows_ground = false; }},
+    {"fused, full search", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.template_search_step = 1; }},
+    {"fused, every row", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.harris.band_rows = 0; }},
+    {"fused, no motion prior", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.motion_prior_q15 = 0; }},
+    {"paper form.", TargetMethod::fused, true, 20, 1,
+     [](Params& p) { p.tracker.formulation = TargetFormulation::paper; }},
+    {"paper form., no reset", TargetMethod::fused, false, 20, 1,
+     [](Params& p) { p.tracker.formulation = TargetFormulation::paper; }},
 };
 constexpr size_t kDefault = 4;  // "fused (paper Q)": the pipeline's defaults
 
@@ -333,19 +310,7 @@ int main(int argc, char** argv) {
                 qt::cli::qvga_target_config(kVariants[v].method, kVariants[v].reset);
             config.tracker.kalman.q_pos = kVariants[v].q_pos;
             config.tracker.kalman.q_vel = kVariants[v].q_vel;
-            config.tracker.formulation = kVariants[v].formulation;
-            config.tracker.region = kVariants[v].region;
-            config.tracker.rep_gate = kVariants[v].rep_gate;
-            config.detector = kVariants[v].detector;
-            config.tracker.coast_fit_frames = kVariants[v].coast_fit_frames;
-            config.tracker.coast_projective = kVariants[v].coast_projective;
-            config.ground_corners_only = kVariants[v].ground_corners_only;
-            config.geometry.pairs = kVariants[v].pairs;
-            config.template_blend = kVariants[v].template_blend;
-            config.template_search_step = kVariants[v].template_search_step;
-            config.harris.band_rows = kVariants[v].harris_band;
-            config.motion_prior_q15 = kVariants[v].motion_prior_q15;
-            config.template_follows_ground = kVariants[v].template_follows_ground;
+            if (kVariants[v].choice) kVariants[v].choice(config);
             const auto run = qt::cli::run_target_sequence(seq, config, &frames);
             const Summary s = summarise(run);
             if (v == kDefault) {
@@ -367,7 +332,7 @@ int main(int argc, char** argv) {
             qt::io::PlotSeries series{kVariants[v].name, {}};
             for (const TargetRunFrame& f : run) series.y.push_back(f.error_px);
             if (kVariants[v].method == TargetMethod::fused &&
-                kVariants[v].formulation == TargetFormulation::paper)
+                config.tracker.formulation == TargetFormulation::paper)
                 reset_plot.series.push_back(series);
             plot.series.push_back(series);
         }
