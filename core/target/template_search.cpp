@@ -57,6 +57,13 @@ struct Search {
         const int64_t du = u - uc, dv = v - vc;
         return static_cast<int32_t>((prior_scale * (du * du + dv * dv)) >> 16);
     }
+    // Scores the placement (u, v) in full and hands it to a sink (Best or Leaders) with the
+    // prior's penalty taken off.
+    template <class Sink>
+    void consider(int32_t u, int32_t v, Sink& sink) const {
+        const int32_t raw = score(u, v);
+        sink.consider(raw - penalty(u, v), u, v, raw);
+    }
     // The score of the template with its top-left corner at (u, v), Q15.
     int32_t score(int32_t u, int32_t v) const {
         const uint8_t* at = region.pixels + static_cast<uint32_t>(v - region.y0) * region.stride +
@@ -175,9 +182,9 @@ void scan_strips(const Search& q, int32_t step, Sink& best) {
                 s.sb = box_sum;
                 s.sbb = box_sq;
                 s.sab = dot_block(q.tpl, tw, th, at0 + static_cast<uint32_t>(c), q.region.stride);
-                // A score certainly below the bar cannot pass it (a tie could: it may come
-                // earlier in row-major order); its root and division are spared.
-                // The NCC it needs to reach the bar (none can exceed 32767).
+                // A placement whose NCC is certainly below what it needs to reach the bar (the
+                // bar plus its penalty; none exceeds 32767) cannot pass it (a tie could: it may
+                // come earlier in row-major order); its root and division are spared.
                 const int32_t pen = q.penalty(u, v);
                 const int32_t need = best.bar() == INT32_MIN ? INT32_MIN : best.bar() + pen;
                 if (need > 32767 || ncc_certainly_below(s, need))
@@ -211,10 +218,7 @@ void coarse_to_fine(const Search& q, int32_t step, Best& best) {
                     const int32_t du = u - leaders.at[j].u, dv = v - leaders.at[j].v;
                     seen = du > -step && du < step && dv > -step && dv < step;
                 }
-                if (!seen) {
-                    const int32_t raw = q.score(u, v);
-                    best.consider(raw - q.penalty(u, v), u, v, raw);
-                }
+                if (!seen) q.consider(u, v, best);
             }
     }
 }
@@ -274,10 +278,7 @@ TemplateHit search_template(const uint8_t* tpl, uint8_t tw, uint8_t th, const Pi
     // A template wider than half a strip (a few rows of many columns) is scored as it is.
     if (tw > kStrip / 2) {
         for (int32_t v = q.v0; v <= q.v1; ++v)
-            for (int32_t u = q.u0; u <= q.u1; ++u) {
-                const int32_t raw = q.score(u, v);
-                best.consider(raw - q.penalty(u, v), u, v, raw);
-            }
+            for (int32_t u = q.u0; u <= q.u1; ++u) q.consider(u, v, best);
     } else if (lattice == 1 || int64_t{q.u1 - q.u0 + 1} * (q.v1 - q.v0 + 1) <= kExhaustiveUpTo) {
         scan_strips(q, 1, best);
     } else {
