@@ -194,11 +194,19 @@ int main() {
     sh_write(median.total() <= kAimInstructions && worst.total() <= kAimWorstInstructions
                  ? "met"
                  : "NOT met");
-    sh_write(" (median <= 4000000, worst <= 5000000 per frame), ram ");
+    sh_write(" (median <= ");
+    sh_dec(kAimInstructions);
+    sh_write(", worst <= ");
+    sh_dec(kAimWorstInstructions);
+    sh_write(" per frame), ram ");
     sh_write(ram_used <= kAimRamBytes ? "met" : "NOT met");
-    sh_write(" (<= 65536 B with the stack), flash ");
+    sh_write(" (<= ");
+    sh_dec(kAimRamBytes);
+    sh_write(" B with the stack), flash ");
     sh_write(flash <= kAimFlashBytes ? "met" : "NOT met");
-    sh_write(" (<= 131072 B)\n");
+    sh_write(" (<= ");
+    sh_dec(kAimFlashBytes);
+    sh_write(" B)\n");
 
     // Painted words left at the bottom of the stack: fewer than this and the stack may have
     // overflowed into .bss unnoticed.
