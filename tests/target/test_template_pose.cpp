@@ -7,20 +7,17 @@
 #include <cstdint>
 #include <vector>
 
+#include "support/smooth_texture.h"
 #include "target/float/template_pose.h"
 #include "target/ncc_match.h"
 
 using namespace qt;
+using qt::test::smooth_texture;
 
 namespace {
 
-double texture(double x, double y) {
-    return 128 + 50 * std::sin(0.45 * x + 0.15 * y + 0.4) +
-           40 * std::sin(-0.2 * x + 0.5 * y + 1.3) + 20 * std::sin(0.3 * x + 0.35 * y + 2.2);
-}
-
 // The texture about the template's centre as the linear map m (row-major 2 × 2, double) shows
-// it: pixel p holds texture(c + m⁻¹(p − c)), rounded.
+// it: pixel p holds smooth_texture(c + m⁻¹(p − c)), rounded.
 std::vector<uint8_t> render(int w, int h, const double m[4]) {
     const double det = m[0] * m[3] - m[1] * m[2];
     const double a = m[3] / det, b = -m[1] / det, c = -m[2] / det, d = m[0] / det;
@@ -30,7 +27,7 @@ std::vector<uint8_t> render(int w, int h, const double m[4]) {
         for (int x = 0; x < w; ++x) {
             const double dx = x - cx, dy = y - cy;
             img[static_cast<size_t>(y * w + x)] = static_cast<uint8_t>(
-                std::lround(texture(cx + a * dx + b * dy, cy + c * dx + d * dy)));
+                std::lround(smooth_texture(cx + a * dx + b * dy, cy + c * dx + d * dy)));
         }
     return img;
 }

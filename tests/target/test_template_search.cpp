@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "base/prng.h"
+#include "support/smooth_texture.h"
 #include "target/template_search.h"
 
 using namespace qt;
+using qt::test::smooth_texture;
 
 namespace {
 
@@ -51,17 +53,13 @@ PixelRegion part(const std::vector<uint8_t>& img, int stride, int x0, int y0, in
     return r;
 }
 
-// A smooth texture in double, rendered with its content moved by (dx, dy).
-double texture(double x, double y) {
-    return 128 + 50 * std::sin(0.45 * x + 0.15 * y + 0.4) +
-           40 * std::sin(-0.2 * x + 0.5 * y + 1.3) + 20 * std::sin(0.3 * x + 0.35 * y + 2.2);
-}
+// The smooth texture (support/smooth_texture.h), rendered with its content moved by (dx, dy).
 std::vector<uint8_t> render(int w, int h, double dx, double dy) {
     std::vector<uint8_t> img(static_cast<size_t>(w * h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             img[static_cast<size_t>(y * w + x)] = static_cast<uint8_t>(
-                std::lround(std::min(255.0, std::max(0.0, texture(x - dx, y - dy)))));
+                std::lround(std::min(255.0, std::max(0.0, smooth_texture(x - dx, y - dy)))));
     return img;
 }
 
@@ -276,9 +274,10 @@ TEST_CASE(
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x)
                 img[static_cast<size_t>(y * w + x)] =
-                    kind == 0   ? static_cast<uint8_t>(rng.below(256))
-                    : kind == 1 ? static_cast<uint8_t>(std::lround(texture(x + phase, y - phase)))
-                                : static_cast<uint8_t>(((x % 4) * 53 + (y % 3) * 71) % 256);
+                    kind == 0 ? static_cast<uint8_t>(rng.below(256))
+                    : kind == 1
+                        ? static_cast<uint8_t>(std::lround(smooth_texture(x + phase, y - phase)))
+                        : static_cast<uint8_t>(((x % 4) * 53 + (y % 3) * 71) % 256);
         const int tw = 3 + static_cast<int>(rng.below(14)),
                   th = 3 + static_cast<int>(rng.below(14));
         const uint8_t step = static_cast<uint8_t>(2 + rng.below(3));
