@@ -92,6 +92,27 @@ bool cut_template(const PixelRegion& region, int32_t x, int32_t y, uint8_t w, ui
     return true;
 }
 
+// The template seen at a step f times coarser: out's pixel (X, Y) is the rounded mean of t's
+// f × f pixels [f·X, f·X + f) × [f·Y, f·Y + f); out is ⌊w / f⌋ × ⌊h / f⌋ (t's last w mod f
+// columns and h mod f rows left out). f <= 1: a copy.
+template <uint8_t MaxSide>
+void shrink_template(const TargetTemplate<MaxSide>& t, uint16_t f, TargetTemplate<MaxSide>& out) {
+    if (f <= 1) {
+        out = t;
+        return;
+    }
+    out.w = static_cast<uint8_t>(t.w / f);
+    out.h = static_cast<uint8_t>(t.h / f);
+    const uint32_t area = static_cast<uint32_t>(f) * f;
+    for (uint32_t y = 0; y < out.h; ++y)
+        for (uint32_t x = 0; x < out.w; ++x) {
+            uint32_t sum = 0;
+            for (uint32_t j = 0; j < f; ++j)
+                for (uint32_t i = 0; i < f; ++i) sum += t.pixels[(y * f + j) * t.w + x * f + i];
+            out.pixels[y * out.w + x] = static_cast<uint8_t>((sum + area / 2) / area);
+        }
+}
+
 // A rectangle of a streamed frame kept as its rows go by: at most MaxW × MaxH pixels. With a
 // step s > 1 it keeps the frame shrunk by s: stored pixel (X, Y) is the rounded mean of the
 // frame's s × s block [ox + s·X, ox + s·X + s) × [oy + s·Y, oy + s·Y + s), the grid's origin

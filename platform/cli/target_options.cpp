@@ -50,7 +50,8 @@ Option integer(const char* name, const char* value, const char* what, const Sett
 
 // An NCC score within `range` (-1..1) stored as Q15.
 Option score_q15(const char* name, const char* what, const SettingRange& range,
-                 std::function<int16_t&(TargetOptions&)> field) {
+                 std::function<int16_t&(TargetOptions&)> field,
+                 GeometryCommand command = GeometryCommand::homography) {
     return {name,
             "NCC",
             described(what, range),
@@ -61,7 +62,7 @@ Option score_q15(const char* name, const char* what, const SettingRange& range,
                 field(o) = static_cast<int16_t>(std::lround(std::fmin(v * 32768.0, 32767.0)));
                 return true;
             },
-            GeometryCommand::homography,
+            command,
             &range};
 }
 
@@ -260,6 +261,19 @@ const FlagTable<TargetOptions, GeometryCommand>& target_flags() {
                 "placement's NCC before keeping the best (0: the best NCC anywhere)",
                 kTargetPipelineRanges.motion_prior_q15,
                 [](TargetOptions& o) -> int16_t& { return o.config.motion_prior_q15; }),
+            integer<uint16_t>(
+                "redetect-after", "FRAMES",
+                "after this many frames without a match, every other frame searches the whole "
+                "frame (coarse) for the template (0: never)",
+                kTargetPipelineRanges.redetect_after,
+                [](TargetOptions& o) -> uint16_t& { return o.config.redetect_after; }),
+            score_q15(
+                "redetect-score",
+                "least NCC of the whole-frame search's best, and of the match in the next "
+                "frame's window there that restarts the track",
+                kTargetPipelineRanges.redetect_score,
+                [](TargetOptions& o) -> int16_t& { return o.config.redetect_score_q15; },
+                GeometryCommand::target),
             integer<uint16_t>(
                 "harris-band", "ROWS",
                 "corners are sought in a band of this many rows about each cell row's middle "

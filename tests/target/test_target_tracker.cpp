@@ -1216,3 +1216,81 @@ TEST_CASE(
     CHECK(next.y == Approx(62).margin(1e-3));
     CHECK(t.update(seen(40, 62)).state == TargetState::measured);
 }
+
+TEST_CASE(
+    "look_at: the next window is there, carried by the camera, and only a match of the look's "
+    "score restarts the track",
+    "[target][redetect]") {
+    TargetTrackerParams p;
+    TargetTracker t = walked_left(100, 2, p);  // last measured at x = 90, 2 px a frame
+    // Lost sight of: the filter's own prediction goes on (90 − 2k).
+    for (int k = 0; k < 3; ++k) {
+        t.predict(geometry(Homography{}));
+        REQUIRE(t.update(searched_in_vain()).state == TargetState::predicted);
+    }
+    const TargetTracker before = t;
+    SECTION("the window: the look's point moved by this frame's homography, the look's radius") {
+        t.look_at(30, 40, 10, 0.85f);
+        const SearchWindow w = t.predict(geometry(translation(5, -3)));
+        CHECK(w.x == Approx(35).margin(1e-4));
+        CHECK(w.y == Approx(37).margin(1e-4));
+        CHECK(w.radius == 10);
+        // Only the next frame: the one after is the prediction's again, as if no look had
+        // been asked for.
+        t.update(kNone);
+        const SearchWindow next = t.predict(geometry(Homography{}));
+        TargetTracker plain = before;
+        plain.predict(geometry(translation(5, -3)));
+        plain.update(kNone);
+        const SearchWindow expected = plain.predict(geometry(Homography{}));
+        CHECK(next.x == expected.x);
+        CHECK(next.y == expected.y);
+        CHECK(next.radius == expected.radius);
+        CHECK(next.x > 80);  // the filter's, near x = 90 − 2·5 + 5, not the look's 35
+    }
+    SECTION("a match of the look's score restarts the filter there, with no velocity") {
+        t.look_at(30, 40, 10, 0.85f);
+        t.predict(geometry(Homography{}));
+        const TargetEstimate e = t.update(seen(31, 41, 0.86f));
+        CHECK(e.state == TargetState::reacquired);
+        CHECK(e.x == 31);
+        CHECK(e.y == 41);
+        CHECK(e.unseen == 0);
+        const SearchWindow w = t.predict(geometry(Homography{}));
+        CHECK(w.x == Approx(31).margin(1e-3));
+        CHECK(w.y == Approx(41).margin(1e-3));
+        CHECK(t.update(seen(31, 41)).state == TargetState::measured);
+    }
+    SECTION("a match below the look's score (above min_score) is no measurement at all") {
+        t.look_at(30, 40, 10, 0.85f);
+        t.predict(geometry(Homography{}));
+        const TargetEstimate e = t.update(seen(31, 41, 0.84f));
+        // As a frame searched in vain: the filter neither restarted nor updated.
+        TargetTracker vain = before;
+        vain.predict(geometry(Homography{}));
+        const TargetEstimate v = vain.update(searched_in_vain());
+        CHECK(e.state == TargetState::predicted);
+        CHECK(e.x == v.x);
+        CHECK(e.y == v.y);
+        CHECK(e.unseen == v.unseen);
+    }
+    SECTION("a lost target is restarted the same way") {
+        p.max_unseen = 4;
+        TargetTracker lost = walked_left(100, 2, p);
+        for (int k = 0; k < 5; ++k) {
+            lost.predict(geometry(Homography{}));
+            lost.update(searched_in_vain());
+        }
+        REQUIRE(lost.state() == TargetState::lost);
+        CHECK(lost.predict(geometry(Homography{})).radius == 0);  // lost: nothing searched
+        lost.update(kNone);
+        lost.look_at(120, 20, 8, 0.85f);
+        const SearchWindow w = lost.predict(geometry(Homography{}));
+        CHECK(w.x == 120);
+        CHECK(w.radius == 8);
+        const TargetEstimate e = lost.update(seen(121, 22, 0.9f));
+        CHECK(e.state == TargetState::reacquired);
+        CHECK(e.x == 121);
+        CHECK(lost.predict(geometry(Homography{})).x == Approx(121).margin(1e-3));
+    }
+}

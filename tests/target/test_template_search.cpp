@@ -558,3 +558,42 @@ TEST_CASE("blend_toward: 1/n of the way, rounded to nearest, halves up, and n <=
                 CHECK((t <= c ? (b >= t && b <= c) : (b <= t && b >= c)));
             }
 }
+
+TEST_CASE("shrink_template: means of f x f pixels, halves up, the remainder left out",
+          "[template][redetect]") {
+    qt::TargetTemplate<16> t;
+    t.w = 5;
+    t.h = 3;
+    const uint8_t px[15] = {10, 20, 30, 40, 250,  //
+                            11, 21, 31, 41, 250,  //
+                            99, 99, 99, 99, 99};
+    std::copy(px, px + 15, t.pixels);
+    qt::TargetTemplate<16> out;
+    // f = 2: 2 × 1; (10 + 20 + 11 + 21)/4 = 15.5 -> 16, (30 + 40 + 31 + 41)/4 = 35.5 -> 36;
+    // column 4 and row 2 left out.
+    qt::shrink_template(t, 2, out);
+    CHECK(out.w == 2);
+    CHECK(out.h == 1);
+    CHECK(out.pixels[0] == 16);
+    CHECK(out.pixels[1] == 36);
+    // f = 3: 1 × 1, the top-left 3 × 3: (10 + 20 + 30 + 11 + 21 + 31 + 3·99)/9 = 420/9 = 46.7
+    // -> 47.
+    qt::shrink_template(t, 3, out);
+    CHECK(out.w == 1);
+    CHECK(out.h == 1);
+    CHECK(out.pixels[0] == 47);
+    // f = 1 (and 0): the template itself.
+    for (uint16_t f : {0, 1}) {
+        qt::shrink_template(t, f, out);
+        CHECK(out.w == 5);
+        CHECK(out.h == 3);
+        CHECK(std::equal(t.pixels, t.pixels + 15, out.pixels));
+    }
+    // A template of 16 × 16 at 255 shrinks to 255 (sums of 16 × 16 · 255 fit).
+    qt::TargetTemplate<16> white;
+    white.w = white.h = 16;
+    std::fill(white.pixels, white.pixels + 256, uint8_t{255});
+    qt::shrink_template(white, 16, out);
+    CHECK(out.w == 1);
+    CHECK(out.pixels[0] == 255);
+}

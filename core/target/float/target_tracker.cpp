@@ -63,7 +63,7 @@ void TargetTracker::init(float x, float y, uint16_t width, uint16_t height,
     state_ = TargetState::measured;
     geometry_ok_ = true;
     geometry_assumed_ = false;
-    bad_geometry_ = 0;
+    looking_ = looked_ = false;
     last_x_ = x;
     last_y_ = y;
     lost_frames_ = 0;
@@ -140,10 +140,34 @@ void TargetTracker::restart_on(float x, float y) {
     lost_by_exit_ = false;
     unseen_ = 0;
     unconfirmed_ = 0;
+    bad_geometry_ = 0;
     remember(x, y);
 }
 
+void TargetTracker::look_at(float x, float y, float radius, float min_score) {
+    looking_ = true;
+    look_score_ = min_score;
+    look_x_ = x;
+    look_y_ = y;
+    look_radius_ = radius;
+}
+
 SearchWindow TargetTracker::predict(const FrameGeometry& g) {
+    looked_ = looking_;
+    looking_ = false;
+    SearchWindow w = predict_from_state(g);
+    if (!looked_) return w;
+    // The camera's motion since look_at(): this frame's trusted homography, or the last one.
+    const Homography& h = g.valid && geometry_trusted(g, params_) ? g.h : last_h_;
+    SearchWindow look;
+    look.x = look_x_;
+    look.y = look_y_;
+    apply_homography(h, look_x_, look_y_, look.x, look.y);
+    look.radius = look_radius_;
+    return look;
+}
+
+SearchWindow TargetTracker::predict_from_state(const FrameGeometry& g) {
     SearchWindow w;
     if (state_ == TargetState::lost) {
         if (!searching_lost()) return w;
@@ -276,8 +300,23 @@ SearchWindow TargetTracker::expected() const {
     return copy.predict(none);
 }
 
-TargetEstimate TargetTracker::update(const TargetMeasurement& m) {
+TargetEstimate TargetTracker::update(const TargetMeasurement& measured) {
     TargetEstimate e;
+    TargetMeasurement m = measured;
+    if (looked_) {
+        looked_ = false;
+        if (m.found && m.score >= look_score_) {
+            restart_on(m.x, m.y);
+            last_x_ = m.x;  // template_only's track
+            last_y_ = m.y;
+            state_ = TargetState::reacquired;
+            e.x = held_x_;
+            e.y = held_y_;
+            e.state = state_;
+            return e;
+        }
+        m.found = false;  // the window was not the prediction's: no measurement of it
+    }
     const bool found = m.found && m.score >= params_.min_score;
     if (state_ != TargetState::lost && params_.method == TargetMethod::template_only) {
         if (found) {

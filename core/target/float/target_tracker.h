@@ -230,6 +230,15 @@ public:
     SearchWindow expected() const;
     // Second half: the search result (found == false when nothing matched well enough).
     TargetEstimate update(const TargetMeasurement& m);
+    // After update(): the target's look was found at (x, y) px of this frame's image by a
+    // search that did not follow the prediction (the pipeline's whole-frame search). The next
+    // predict() returns the window of half-side `radius` px there, carried by the next frame's
+    // camera motion, instead of the prediction's; a match in it with an NCC of at least
+    // min_score restarts the filter on it, reported as reacquired, and anything less leaves the
+    // track as if nothing had been found (the filter is not updated: the window was not the
+    // prediction's). The D_nds gate does not apply: the prediction is what failed. Works
+    // while lost too.
+    void look_at(float x, float y, float radius, float min_score);
 
     // The most frames the coasting line is fitted over (the measurements kept).
     static constexpr uint16_t kMaxCoastFitFrames =
@@ -274,10 +283,15 @@ private:
     bool lost_by_exit_ = false;
     float lost_x_ = 0, lost_y_ = 0;
     uint16_t lost_frames_ = 0;  // frames lost so, for the search window's growth
+    // look_at(): where (previous image, px) and how wide (px) the next window is, and the NCC
+    // a match there needs; looked_: this frame's window is it.
+    bool looking_ = false, looked_ = false;
+    float look_x_ = 0, look_y_ = 0, look_radius_ = 0, look_score_ = 0;
     // Whether the estimate (x, y), unseen, leaves the image unconfirmed; (mx, my) the last
     // measured position carried into this image.
     bool unconfirmed_exit(float x, float y, float& mx, float& my) const;
     bool searching_lost() const;
+    SearchWindow predict_from_state(const FrameGeometry& g);  // predict() without look_at()
     void restart_on(float x, float y);
     // The accepted measurements of the last frames, in the reference image (A⁻¹ z, carried by
     // A at each reset), oldest first from history_start_ (a ring), with their frame.
