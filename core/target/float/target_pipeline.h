@@ -39,7 +39,7 @@ const char* target_detector_name(TargetDetector d);
 // of each cell row (40 rows at QVGA). Against every row (band_rows 0): the Cortex-M4F rows
 // stage 6.6 M → 2.6 M instructions a frame; on the generated sequences the target's error while
 // visible 0.87 px both, at the end of the spell out of view 4.6 → 4.8 px (medians over 15
-// seeds); on the real footage 57.8 → 57.9 % within 10 px (docs/target.md).
+// seeds); on the real footage 58.3 → 57.8 % within 10 px (docs/target.md).
 constexpr HarrisParams target_harris_params() {
     HarrisParams h;
     h.band_rows = 12;
@@ -61,7 +61,7 @@ struct TargetPipelineParams {
     // N > 1 (default 8): every accepted match moves it 1/N of the way to the cut there (pixels,
     // and at step 1 the centre offset; blend_toward): a running mean of the target's look over
     // about N frames, which one partly occluded cut cannot take over (a walker's legs, an
-    // occluder's edge): on the real footage 51.9 → 57.9 % within 10 px, wrong claims 17 → 10
+    // occluder's edge): on the real footage 51.9 → 57.8 % within 10 px, wrong claims 17 → 8
     // of 65 (docs/target.md).
     // template_only replaces at every match (the paper's Fig. 8).
     uint8_t template_blend = 8;
@@ -74,14 +74,14 @@ struct TargetPipelineParams {
     // window; s > 1 every s-th along each axis, then the placements beside the three best: about
     // 1/s² of the work. 2 (default): the search's Cortex-M4F cost a frame 1.4 M → 0.5 M
     // instructions median, 2.7 M → 0.8 M worst; the generated sequences' figures the same, the
-    // real footage's 57.2 → 57.9 % within 10 px (docs/target.md).
+    // real footage's 58.4 → 57.8 % within 10 px (docs/target.md).
     uint8_t template_search_step = 2;
     // The motion prior (search_template's prior): the template search takes prior·(d / r)² off
     // the NCC of a placement d px from the prediction in a window of half-side r (Q15), and
     // keeps the best of what is left; the match is still judged by its own NCC (min_score,
     // D_nds). A look-alike at the window's edge must then out-score the target by 0.2 to be
     // taken for it. 0: the best NCC anywhere in the window (the paper). On the real footage
-    // (docs/target.md) within 10 px 55.6 → 57.9 %, wrong claims 16 → 10 of 65.
+    // (docs/target.md) within 10 px 52.6 → 57.8 %, wrong claims 17 → 8 of 65.
     int16_t motion_prior_q15 = 6554;
     // Whole-frame re-detection (the NCC template): after redetect_after frames without an
     // accepted match (lost ones too), every other frame is kept whole at a coarse step (the
@@ -91,10 +91,10 @@ struct TargetPipelineParams {
     // search there (TargetTracker::look_at), and a match there of the same NCC restarts the
     // track. The frames between search the prediction as before. A target that left the
     // window (a flick faster than the window, a long occlusion, a cut) is found again
-    // wherever it is: on the real footage the coin 18.3 → 52.2 % within 10 px
-    // (docs/target.md). Both stages ask more than min_score: the motion model no longer
-    // vouches for the place. Off for a target whose coarse template would have fewer than
-    // kMinRedetectSide pixels a side (a walker in vtest.avi at 384 × 288). 0: off.
+    // wherever it is: on the real footage the coin 18.3 → 47.2 % within 10 px, the walkers
+    // unchanged (docs/target.md). Both stages ask more than min_score: the motion model no
+    // longer vouches for the place. None for a target whose coarse template would have fewer
+    // than kMinRedetectSide pixels a side. 0: off.
     uint16_t redetect_after = 15;
     int16_t redetect_score_q15 = 27853;  // 0.85
     TargetDetector detector = TargetDetector::ncc_template;
