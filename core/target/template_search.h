@@ -186,12 +186,27 @@ public:
             const int32_t left = frame_w_ - first(block);
             return left < s ? left : s;
         };
-        for (uint16_t i = 0; i < region_.w; ++i) {
-            const int32_t block = region_.x0 + i;
-            const uint8_t* in = row + first(block);
-            uint32_t sum = sums_[i];
-            for (int32_t k = 0, n = cols(block); k < n; ++k) sum += in[k];
-            sums_[i] = static_cast<uint16_t>(sum);
+        // The blocks in order, s pixels each, the last one fewer if the edge cuts it (only the
+        // last can be cut: the region is clipped to the frame's blocks). Steps 2-4 unrolled: a
+        // whole frame kept at a coarse step (the tracker's re-detection) passes every pixel
+        // through here.
+        const uint8_t* in = row + first(region_.x0);
+        const int32_t whole = cols(region_.x0 + region_.w - 1) == s ? region_.w : region_.w - 1;
+        switch (s) {
+            case 2: add_blocks<2>(in, whole); break;
+            case 3: add_blocks<3>(in, whole); break;
+            case 4: add_blocks<4>(in, whole); break;
+            default:
+                for (int32_t i = 0; i < whole; ++i) {
+                    uint32_t sum = sums_[i];
+                    for (int32_t k = 0; k < s; ++k) sum += in[i * s + k];
+                    sums_[i] = static_cast<uint16_t>(sum);
+                }
+        }
+        if (whole < region_.w) {
+            uint32_t sum = sums_[whole];
+            for (int32_t k = 0, n = cols(region_.x0 + whole); k < n; ++k) sum += in[whole * s + k];
+            sums_[whole] = static_cast<uint16_t>(sum);
         }
         const int32_t rows = (y - oy_) % s + 1;    // of the block row so far
         if (rows < s && y + 1 < frame_h_) return;  // the block row goes on
@@ -205,6 +220,16 @@ public:
     const PixelRegion& region() const { return region_; }
 
 private:
+    // Adds the S pixels of each of the first n blocks of a row (from in) to their sums.
+    template <int32_t S>
+    void add_blocks(const uint8_t* in, int32_t n) {
+        for (int32_t i = 0; i < n; ++i, in += S) {
+            uint32_t sum = sums_[i];
+            for (int32_t k = 0; k < S; ++k) sum += in[k];
+            sums_[i] = static_cast<uint16_t>(sum);
+        }
+    }
+
     uint8_t pixels_[static_cast<uint32_t>(MaxW) * MaxH] = {};
     uint16_t sums_[MaxW] = {};  // the block row in progress (step > 1)
     PixelRegion region_;

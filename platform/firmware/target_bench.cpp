@@ -7,8 +7,13 @@
 //
 // Prints, between "=== chain target_qvga" and "=== end target_qvga", the text of target_text.h
 // frame by frame, which the ctest compares byte for byte with the host's (run_qemu.cmake). Then
-// the budgets: instructions per frame and stage, median and worst, flash, RAM and stack. Exit
-// status 0 unless a frame failed to run or the stack came near its end.
+// the budgets: instructions per frame and stage, median and worst, flash, RAM and stack. Then
+// the whole-frame re-detection's frames, which the sequence never asks for (its 15 px box is
+// 3 × 3 pixels at the coarse step): the same frames again from a 64 px box on the vehicle
+// (blocks of 4 px: the largest coarse template, 16 × 16, over the whole frame in 80 × 60
+// blocks), no match accepted (min_score above any NCC), so that every other frame from the
+// second is a re-detection frame; their instructions, median and worst ("budget redetect").
+// Exit status 0 unless a frame failed to run or the stack came near its end.
 //
 // Instructions come from SysTick ticks, 40 instructions each under -icount shift=0
 // (cycle_counter.h); a reading is quantised to 40 and includes one ticks_now() call. Stages:
@@ -103,16 +108,18 @@ void print_instructions(const char* prefix, const char* name, const Instructions
     sh_write("\n");
 }
 
-// One frame through the pipeline, timed; its text printed. Returns an error or nullptr.
-const char* run_frame(const TargetFrameBlob& frame, Instructions& n) {
+// One frame through the pipeline with `params`, timed into n, its output into f; its text
+// printed when `print`. Returns an error or nullptr.
+const char* run_frame(const TargetFrameBlob& frame, const qt::TargetPipelineParams& params,
+                      bool print, Instructions& n, qt::TargetFrame& f) {
     const Pgm pgm = parse_pgm(frame.begin, frame.end, kWidth, kHeight);
     if (pgm.error != nullptr) return pgm.error;
-    qt::Status s = g_pipeline.begin_frame(pgm.width, pgm.height, qt::TargetPipelineParams{});
+    qt::Status s = g_pipeline.begin_frame(pgm.width, pgm.height, params);
     n.stage[kRows] = push_camera_rows(pgm, g_line, s, [](const uint8_t* line, uint16_t w) {
         return g_pipeline.push_row(line, w);
     });
 
-    qt::TargetFrame f;
+    f = qt::TargetFrame{};
     if (s == qt::Status::ok) {
         uint64_t t = ticks_now();
         s = g_pipeline.finish(f, [&](qt::TargetStage stage) {
@@ -122,7 +129,8 @@ const char* run_frame(const TargetFrameBlob& frame, Instructions& n) {
         });
         n.stage[kFilter] += ticks_to_instructions(ticks_now() - t);  // after the last mark
     }
-    qt::fw::write_target_text(frame.name, s, f, [](const char* text) { sh_write(text); });
+    if (print)
+        qt::fw::write_target_text(frame.name, s, f, [](const char* text) { sh_write(text); });
     return s == qt::Status::ok || s == qt::Status::capacity_exceeded ? nullptr : qt::status_name(s);
 }
 
@@ -144,7 +152,46 @@ Instructions median_of(const Instructions* frames, unsigned count) {
     return m;
 }
 
-Instructions g_frames[kFrameCount];
+// The worst of each stage over `count` frames.
+Instructions worst_of(const Instructions* frames, unsigned count) {
+    Instructions w;
+    for (unsigned k = 0; k < count; ++k)
+        for (unsigned s = 0; s < kStages; ++s)
+            if (frames[k].stage[s] > w.stage[s]) w.stage[s] = frames[k].stage[s];
+    return w;
+}
+
+Instructions g_frames[kFrameCount];  // the first pass's frames, then the second's re-detections
+
+// The second pass (the file comment): returns the re-detection frames' worst total, 0 when none
+// ran, and counts the frames that failed.
+uint64_t redetect_budget(unsigned& failures) {
+    constexpr int32_t kSide = 64;
+    const int32_t cx = kStartX + kStartSide / 2, cy = kStartY + kStartSide / 2;
+    auto clamp = [](int32_t v, int32_t hi) { return v < 0 ? 0 : v > hi ? hi : v; };
+    g_pipeline.set_target(clamp(cx - kSide / 2, kWidth - kSide),
+                          clamp(cy - kSide / 2, kHeight - kSide), kSide, kSide);
+    qt::TargetPipelineParams params;
+    params.tracker.min_score = 2.0f;  // above any NCC: nothing is accepted
+    params.redetect_after = 1;
+    unsigned count = 0;
+    for (unsigned k = 0; k < kFrameCount; ++k) {
+        Instructions n;
+        qt::TargetFrame f;
+        if (run_frame(kTargetFrames[k], params, false, n, f) != nullptr) ++failures;
+        if (f.redetection) g_frames[count++] = n;
+    }
+    sh_write("budget redetect frames ");
+    sh_dec(count);
+    sh_write(" of ");
+    sh_dec(kFrameCount);
+    sh_write("\n");
+    if (count == 0) return 0;
+    print_instructions("redetect median ", "target_qvga", median_of(g_frames, count));
+    const Instructions worst = worst_of(g_frames, count);
+    print_instructions("redetect worst ", "target_qvga", worst);
+    return worst.total();
+}
 
 }  // namespace
 
@@ -154,7 +201,9 @@ int main() {
     unsigned failures = 0;
     sh_write("=== chain target_qvga\n");
     for (unsigned k = 0; k < kFrameCount; ++k) {
-        const char* error = run_frame(kTargetFrames[k], g_frames[k]);
+        qt::TargetFrame f;
+        const char* error =
+            run_frame(kTargetFrames[k], qt::TargetPipelineParams{}, true, g_frames[k], f);
         if (error != nullptr) {
             ++failures;
             sh_write("FAIL ");
@@ -166,17 +215,15 @@ int main() {
     }
     sh_write("=== end target_qvga\n");
 
-    Instructions worst;
-    for (unsigned k = 0; k < kFrameCount; ++k) {
+    for (unsigned k = 0; k < kFrameCount; ++k)
         print_instructions("", kTargetFrames[k].name, g_frames[k]);
-        for (unsigned s = 0; s < kStages; ++s)
-            if (g_frames[k].stage[s] > worst.stage[s]) worst.stage[s] = g_frames[k].stage[s];
-    }
+    const Instructions worst = worst_of(g_frames, kFrameCount);
     // The first frame starts the track and the second has no track to search yet: the median
     // and the worst are over all frames all the same (a start is a frame the part must run).
     const Instructions median = median_of(g_frames, kFrameCount);
     print_instructions("median ", "target_qvga", median);
     print_instructions("worst ", "target_qvga", worst);
+    const uint64_t redetect_worst = redetect_budget(failures);
 
     const uint32_t flash = static_cast<uint32_t>(__flash_end - __flash_start);
     const uint32_t frames = static_cast<uint32_t>(__frames_end - __frames_start);
@@ -191,14 +238,15 @@ int main() {
     print_field("ram_used", ram_used);
     print_field("TargetPipelineQvgaTemplateOnly", sizeof g_pipeline);
     sh_write("\nbudget aims: instructions ");
-    sh_write(median.total() <= kAimInstructions && worst.total() <= kAimWorstInstructions
+    sh_write(median.total() <= kAimInstructions && worst.total() <= kAimWorstInstructions &&
+                     redetect_worst <= kAimWorstInstructions
                  ? "met"
                  : "NOT met");
     sh_write(" (median <= ");
     sh_dec(kAimInstructions);
     sh_write(", worst <= ");
     sh_dec(kAimWorstInstructions);
-    sh_write(" per frame), ram ");
+    sh_write(" per frame, re-detection frames too), ram ");
     sh_write(ram_used <= kAimRamBytes ? "met" : "NOT met");
     sh_write(" (<= ");
     sh_dec(kAimRamBytes);

@@ -175,9 +175,11 @@ TEST_CASE(
         for (int k = 10; k < 10 + after; ++k) {
             INFO("frame " << k);
             CHECK_FALSE(claims(f[k]));
+            CHECK_FALSE(f[k].redetection);
         }
         const qt::TargetFrame& whole = f[10 + after];
         CHECK_FALSE(claims(whole));
+        CHECK(whole.redetection);
         CHECK(whole.window.radius == 0);  // the window is not searched in that frame
         CHECK(std::abs(whole.hit.x_q8 / 256.0 - cx) < 5);  // a coarse block of 5 px
         CHECK(std::abs(whole.hit.y_q8 / 256.0 - cy) < 5);

@@ -538,6 +538,45 @@ TEST_CASE("RegionCapture keeps the clipped box's rows and columns of the streame
     }
 }
 
+TEST_CASE("RegionCapture at steps 2-6: every block the rounded mean of its frame pixels",
+          "[template]") {
+    // 67 x 50: the right and bottom blocks cut by the frame's edges at every step but 1.
+    constexpr int W = 67, H = 50;
+    Pcg32 rng(29);
+    std::vector<uint8_t> frame(W * H);
+    for (auto& v : frame) v = static_cast<uint8_t>(rng.below(256));
+    RegionCapture<40, 30> cap;
+    for (uint16_t step = 2; step <= 6; ++step)
+        for (uint16_t o = 0; o < step; o += 1) {
+            const uint16_t ox = o, oy = static_cast<uint16_t>((o + 1) % step);
+            // The whole frame, and a box from block (2, 1) cut by the right edge.
+            for (int box = 0; box < 2; ++box) {
+                INFO("step " << step << ", origin (" << ox << ", " << oy << "), box " << box);
+                if (box == 0)
+                    cap.begin(0, 0, 40, 30, W, H, step, ox, oy);
+                else
+                    cap.begin(2, 1, 40, 5, W, H, step, ox, oy);
+                for (int y = 0; y < H; ++y) cap.push_row(y, frame.data() + y * W);
+                const PixelRegion& r = cap.region();
+                const int blocks_w = (W - ox + step - 1) / step;
+                CHECK(r.x0 + r.w == blocks_w);  // the region reaches the frame's last block
+                int wrong = 0;
+                for (int by = 0; by < r.h; ++by)
+                    for (int bx = 0; bx < r.w; ++bx) {
+                        const int x0 = ox + (r.x0 + bx) * step, y0 = oy + (r.y0 + by) * step;
+                        uint32_t sum = 0, area = 0;
+                        for (int y = y0; y < y0 + step && y < H; ++y)
+                            for (int x = x0; x < x0 + step && x < W; ++x) {
+                                sum += frame[static_cast<size_t>(y * W + x)];
+                                ++area;
+                            }
+                        if (r.pixels[by * r.stride + bx] != (sum + area / 2) / area) ++wrong;
+                    }
+                CHECK(wrong == 0);
+            }
+        }
+}
+
 TEST_CASE("blend_toward: 1/n of the way, rounded to nearest, halves up, and n <= 1 replaces",
           "[template]") {
     // Worked by hand: 255/8 = 31.875 -> 32; -255/8 -> -32; 4/8 = 0.5 -> 1 (half up);

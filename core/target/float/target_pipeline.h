@@ -130,6 +130,7 @@ struct TargetFrame {
     FrameHomography geometry;  // previous → this frame (status too_few_pairs on the first frame)
     SearchWindow window;       // where the template was searched
     TemplateHit hit;           // the best match there
+    bool redetection = false;  // kept whole and searched for re-detection (hit: its best)
 };
 
 // The steps of TargetPipeline::finish(), in the order it ends them, for a caller that times them
@@ -396,7 +397,8 @@ private:
             out.window.radius = 0;
         mark(TargetStage::predict);
         const TargetMeasurement m = out.window.radius > 0 ? measure(out) : TargetMeasurement{};
-        look_pending_ = redetect_step_ > 0 && redetect(out);
+        out.redetection = redetect_step_ > 0;
+        look_pending_ = out.redetection && redetect(out);
         mark(TargetStage::search);
         out.estimate = tracker_.update(m);
         remember_box(out.estimate.x, out.estimate.y);
