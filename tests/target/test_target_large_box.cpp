@@ -194,6 +194,15 @@ TEST_CASE(
             CHECK(std::hypot(f[k].estimate.x - cx, f[k].estimate.y - cy) < 1.25);
         }
     }
+    SECTION("homography only (never measures): never re-detects") {
+        params.tracker.method = qt::TargetMethod::homography_only;
+        const std::vector<qt::TargetFrame> f = run_jump(to, params);
+        for (int k = 1; k < 40; ++k) {
+            INFO("frame " << k);
+            CHECK_FALSE(f[k].redetection);
+            CHECK_FALSE(claims(f[k]));
+        }
+    }
     SECTION("re-detection off: never found again") {
         params.redetect_after = 0;
         const std::vector<qt::TargetFrame> f = run_jump(to, params);

@@ -417,11 +417,13 @@ private:
     }
 
     // This frame's re-detection step (frame px per block of the whole frame kept), or 0 for
-    // none: off, too soon, the other frame of the pair, a look to follow, or no step that
-    // fits the frame and leaves the template kMinRedetectSide pixels a side.
+    // none: off, a method that never measures (homography_only), too soon, the other frame of
+    // the pair, a look to follow, or no step that fits the frame and leaves the template
+    // kMinRedetectSide pixels a side.
     uint16_t redetect_step() const {
         const uint16_t after = params_.redetect_after;
-        if (after == 0 || params_.detector != TargetDetector::ncc_template || look_pending_ ||
+        if (after == 0 || params_.detector != TargetDetector::ncc_template ||
+            params_.tracker.method == TargetMethod::homography_only || look_pending_ ||
             unmatched_ < after || (unmatched_ - after) % 2 != 0)
             return 0;
         for (uint32_t s = step_; s <= kMaxStep; s += step_) {
