@@ -220,9 +220,9 @@ TEST_CASE(
 TEST_CASE(
     "target pipeline: a still box tracked in blocks stays put under the running-mean template",
     "[target][large]") {
-    // The match's sub-pixel bias, blended into the target's offset from the template, once
-    // moved the block grid with it every frame: 3.3 px off after 100 frames. Now the bias
-    // alone: 0.26 px.
+    // Blending the cut's offset into the template's would carry the match's sub-pixel bias
+    // into the block grid every frame (3.3 px off after 100 frames); with the offset kept, the
+    // error is the bias alone: 0.27 px.
     const qt::TargetPipelineParams params = qt::cli::qvga_target_config(qt::TargetMethod::fused);
     REQUIRE(params.template_blend > 1);
     const std::vector<qt::TargetFrame> f = run_jump({60, 70}, params, 150);
