@@ -193,15 +193,10 @@ public:
         const uint8_t* in = row + first(region_.x0);
         const int32_t whole = cols(region_.x0 + region_.w - 1) == s ? region_.w : region_.w - 1;
         switch (s) {
-            case 2: add_blocks<2>(in, whole); break;
-            case 3: add_blocks<3>(in, whole); break;
-            case 4: add_blocks<4>(in, whole); break;
-            default:
-                for (int32_t i = 0; i < whole; ++i) {
-                    uint32_t sum = sums_[i];
-                    for (int32_t k = 0; k < s; ++k) sum += in[i * s + k];
-                    sums_[i] = static_cast<uint16_t>(sum);
-                }
+            case 2: add_blocks<2>(in, whole, s); break;
+            case 3: add_blocks<3>(in, whole, s); break;
+            case 4: add_blocks<4>(in, whole, s); break;
+            default: add_blocks<0>(in, whole, s);
         }
         if (whole < region_.w) {
             uint32_t sum = sums_[whole];
@@ -220,12 +215,14 @@ public:
     const PixelRegion& region() const { return region_; }
 
 private:
-    // Adds the S pixels of each of the first n blocks of a row (from in) to their sums.
+    // Adds the s pixels of each of the first n blocks of a row (from in) to their sums; S: s
+    // when known at compile time (the loop unrolled), 0 otherwise.
     template <int32_t S>
-    void add_blocks(const uint8_t* in, int32_t n) {
-        for (int32_t i = 0; i < n; ++i, in += S) {
+    void add_blocks(const uint8_t* in, int32_t n, int32_t s) {
+        const int32_t step = S > 0 ? S : s;
+        for (int32_t i = 0; i < n; ++i, in += step) {
             uint32_t sum = sums_[i];
-            for (int32_t k = 0; k < S; ++k) sum += in[k];
+            for (int32_t k = 0; k < step; ++k) sum += in[k];
             sums_[i] = static_cast<uint16_t>(sum);
         }
     }

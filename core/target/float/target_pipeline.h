@@ -446,13 +446,11 @@ private:
         const uint16_t half = static_cast<uint16_t>((r.w > r.h ? r.w : r.h) / 2 + 1);
         out.hit = search_template(coarse, r, r.x0 + r.w / 2, r.y0 + r.h / 2, half,
                                   params_.template_search_step);
-        // Block X's centre is frame pixel s·X + (s − 1)/2 (the grid from 0); 1/256 px.
-        const int64_t s = redetect_step_;
-        out.hit.x_q8 = static_cast<int32_t>(out.hit.x_q8 * s + (s - 1) * 128);
-        out.hit.y_q8 = static_cast<int32_t>(out.hit.y_q8 * s + (s - 1) * 128);
+        out.hit.x_q8 = static_cast<int32_t>(block_to_frame_q8(out.hit.x_q8, redetect_step_, 0));
+        out.hit.y_q8 = static_cast<int32_t>(block_to_frame_q8(out.hit.y_q8, redetect_step_, 0));
         if (!out.hit.found || out.hit.score_q15 < params_.redetect_score_q15) return false;
         // The window: the coarse block's uncertainty and a frame's motion.
-        const float radius = static_cast<float>(s) + params_.tracker.min_radius_px;
+        const float radius = static_cast<float>(redetect_step_) + params_.tracker.min_radius_px;
         tracker_.look_at(
             static_cast<float>(out.hit.x_q8 + offset_x_q8_) * (1.0f / 256.0f),
             static_cast<float>(out.hit.y_q8 + offset_y_q8_) * (1.0f / 256.0f),
@@ -598,10 +596,14 @@ private:
         const int64_t a = clamped_px(left < 0 ? left - 0.5f : left + 0.5f);
         return static_cast<uint16_t>(floor_mod(a, step_));
     }
-    // A block coordinate (1/256 block) as frame px (1/256 px): block X's centre is frame pixel
-    // o + s·X + (s − 1)/2. The identity at step 1.
+    // A block coordinate (1/256 block) of the grid of step s from origin o as frame px (1/256
+    // px): block X's centre is frame pixel o + s·X + (s − 1)/2. The identity at step 1.
+    static int64_t block_to_frame_q8(int64_t b_q8, uint16_t s, uint16_t o) {
+        return b_q8 * s + (s - 1) * 128 + int64_t{o} * 256;
+    }
+    // The same on this frame's grid (step_).
     int64_t to_frame_q8(int64_t b_q8, uint16_t o) const {
-        return b_q8 * step_ + (step_ - 1) * 128 + int64_t{o} * 256;
+        return block_to_frame_q8(b_q8, step_, o);
     }
     // The inverse, rounded down to 1/256 block.
     int64_t from_frame_q8(int64_t f_q8, uint16_t o) const {
