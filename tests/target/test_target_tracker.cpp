@@ -1119,6 +1119,19 @@ TargetTracker walked_left(float x0, float v, const TargetTrackerParams& p) {
     return t;
 }
 
+// e, the frame that restarted t on a match at (x, y): reacquired there, the next window centred
+// there (a restart has no velocity), and a match there the next frame measured.
+void check_restarted_at(TargetTracker& t, const TargetEstimate& e, float x, float y) {
+    CHECK(e.state == TargetState::reacquired);
+    CHECK(e.x == x);
+    CHECK(e.y == y);
+    CHECK(e.unseen == 0);
+    const SearchWindow w = t.predict(geometry(Homography{}));
+    CHECK(w.x == Approx(x).margin(1e-3));
+    CHECK(w.y == Approx(y).margin(1e-3));
+    CHECK(t.update(seen(x, y)).state == TargetState::measured);
+}
+
 // Frames of `g` with `m` until the state is no longer predicted (at most 100): the last
 // estimate.
 TargetEstimate until_not_predicted(TargetTracker& t, const FrameGeometry& g,
@@ -1207,14 +1220,7 @@ TEST_CASE(
     t.predict(geometry(Homography{}));
     CHECK(t.update(seen(40, 62, p.min_score - 0.05f)).state == TargetState::lost);
     t.predict(geometry(Homography{}));
-    e = t.update(seen(40, 62));
-    CHECK(e.state == TargetState::reacquired);
-    CHECK(e.x == 40);
-    CHECK(e.y == 62);
-    const SearchWindow next = t.predict(geometry(Homography{}));
-    CHECK(next.x == Approx(40).margin(1e-3));
-    CHECK(next.y == Approx(62).margin(1e-3));
-    CHECK(t.update(seen(40, 62)).state == TargetState::measured);
+    check_restarted_at(t, t.update(seen(40, 62)), 40, 62);
 }
 
 TEST_CASE(
@@ -1251,15 +1257,7 @@ TEST_CASE(
     SECTION("a match of the look's score restarts the filter there, with no velocity") {
         t.look_at(30, 40, 10, 0.85f);
         t.predict(geometry(Homography{}));
-        const TargetEstimate e = t.update(seen(31, 41, 0.86f));
-        CHECK(e.state == TargetState::reacquired);
-        CHECK(e.x == 31);
-        CHECK(e.y == 41);
-        CHECK(e.unseen == 0);
-        const SearchWindow w = t.predict(geometry(Homography{}));
-        CHECK(w.x == Approx(31).margin(1e-3));
-        CHECK(w.y == Approx(41).margin(1e-3));
-        CHECK(t.update(seen(31, 41)).state == TargetState::measured);
+        check_restarted_at(t, t.update(seen(31, 41, 0.86f)), 31, 41);
     }
     SECTION("a match below the look's score (above min_score) is no measurement at all") {
         t.look_at(30, 40, 10, 0.85f);
@@ -1288,9 +1286,6 @@ TEST_CASE(
         const SearchWindow w = lost.predict(geometry(Homography{}));
         CHECK(w.x == 120);
         CHECK(w.radius == 8);
-        const TargetEstimate e = lost.update(seen(121, 22, 0.9f));
-        CHECK(e.state == TargetState::reacquired);
-        CHECK(e.x == 121);
-        CHECK(lost.predict(geometry(Homography{})).x == Approx(121).margin(1e-3));
+        check_restarted_at(lost, lost.update(seen(121, 22, 0.9f)), 121, 22);
     }
 }

@@ -18,14 +18,20 @@ using qt::test::smooth_texture;
 
 namespace {
 
+// n grey levels drawn uniformly from PCG32(seed).
+std::vector<uint8_t> random_pixels(int n, uint64_t seed) {
+    Pcg32 rng(seed);
+    std::vector<uint8_t> pixels(static_cast<size_t>(n));
+    for (auto& v : pixels) v = static_cast<uint8_t>(rng.below(256));
+    return pixels;
+}
+
 // W × H random grey levels made point-symmetric about the image centre ((W − 1)/2, (H − 1)/2):
 // I(x, y) = I(W − 1 − x, H − 1 − y). A template centred there then scores the same NCC one
 // pixel left and one pixel right (the two blocks are each other's point reflection, and the
 // template is its own), so the parabola's vertex is exactly at the peak: x_q8 = centre·256.
 std::vector<uint8_t> symmetric_noise(int w, int h, uint64_t seed) {
-    Pcg32 rng(seed);
-    std::vector<uint8_t> img(static_cast<size_t>(w * h));
-    for (auto& v : img) v = static_cast<uint8_t>(rng.below(256));
+    std::vector<uint8_t> img = random_pixels(w * h, seed);
     for (int i = 0; i < w * h; ++i) {
         const int x = i % w, y = i / w, mirror = (h - 1 - y) * w + (w - 1 - x);
         if (mirror < i) img[static_cast<size_t>(i)] = img[static_cast<size_t>(mirror)];
@@ -131,9 +137,7 @@ TEST_CASE("search_template finds a cut template exactly, counts and clips its ca
         CHECK(hit.y_q8 == static_cast<int32_t>(20.5 * 256));
     }
     SECTION("on an unsymmetric texture the integer peak is exact and the sub-pixel part small") {
-        Pcg32 rng(5);
-        std::vector<uint8_t> img(64 * 48);
-        for (auto& v : img) v = static_cast<uint8_t>(rng.below(256));
+        const std::vector<uint8_t> img = random_pixels(64 * 48, 5);
         const PixelRegion region = whole(img, 64, 48);
         TargetTemplate<16> t;
         REQUIRE(cut_template(region, 30, 20, 9, 9, t));  // centre (34, 24)
@@ -466,9 +470,7 @@ TEST_CASE("cut_template refuses boxes outside the region or too large, and copie
 TEST_CASE("RegionCapture keeps the clipped box's rows and columns of the streamed frame",
           "[template]") {
     constexpr int W = 64, H = 48;
-    Pcg32 rng(13);
-    std::vector<uint8_t> frame(W * H);
-    for (auto& v : frame) v = static_cast<uint8_t>(rng.below(256));
+    const std::vector<uint8_t> frame = random_pixels(W * H, 13);
     auto stream = [&](auto& cap) {
         for (int y = 0; y < H; ++y) cap.push_row(y, frame.data() + y * W);
     };
@@ -542,9 +544,7 @@ TEST_CASE("RegionCapture at steps 2-6: every block the rounded mean of its frame
           "[template]") {
     // 67 x 50: the right and bottom blocks cut by the frame's edges at every step but 1.
     constexpr int W = 67, H = 50;
-    Pcg32 rng(29);
-    std::vector<uint8_t> frame(W * H);
-    for (auto& v : frame) v = static_cast<uint8_t>(rng.below(256));
+    const std::vector<uint8_t> frame = random_pixels(W * H, 29);
     RegionCapture<40, 30> cap;
     for (uint16_t step = 2; step <= 6; ++step)
         for (uint16_t o = 0; o < step; o += 1) {
